@@ -1,0 +1,11 @@
+// One function per subcommand of build/molchaos; each adds its flags and its run callback.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace molchaos::app {
+
+void add_theory_command(CLI::App& app);
+void add_simulate_command(CLI::App& app);
+
+}  // namespace molchaos::app

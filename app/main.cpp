@@ -1,0 +1,50 @@
+// build/molchaos: the command-line front end. It parses, validates and dispatches; the physics
+// lives in the libraries (theory/, sim/, validation/, figures/).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "molchaos/version.hpp"
+
+namespace {
+
+// CLI11 messages can span lines; a usage error must be exactly one line.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"molchaos: kinetic theory and event-driven simulation of granular gases"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", molchaos::k_version);
+  molchaos::app::add_theory_command(app);
+  molchaos::app::add_simulate_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
+    return 2;
+  } catch (const molchaos::app::UsageError& e) {
+    std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "molchaos: failed: %s\n", one_line(e.what()).c_str());
+    return 1;
+  }
+  return 0;
+}

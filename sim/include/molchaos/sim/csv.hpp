@@ -1,0 +1,23 @@
+// The result file: '# key = value' header lines (every parameter, version, stop reason, counts),
+// then one row per sample. Numbers are written in shortest round-trip form, so a file read back
+// gives the same doubles and the same seed gives a byte-identical file.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "molchaos/sim/result.hpp"
+
+namespace molchaos::sim {
+
+void write_csv(const RunResult& result, std::ostream& out);
+/// Writes to a temporary file next to path, then renames: never a half-written file at path.
+void write_csv_file(const RunResult& result, const std::string& path);
+/// Parses what write_csv wrote; throws std::runtime_error on a corrupt or truncated file.
+RunResult read_csv_file(const std::string& path);
+RunResult read_csv(std::istream& in);
+
+/// One snapshot as CSV: header lines, then x,y[,z],vx,vy[,vz] per particle.
+void write_snapshot_csv(const Snapshot& snapshot, int dimension, std::ostream& out);
+
+}  // namespace molchaos::sim

@@ -1,0 +1,185 @@
+// The event-driven engine for d-dimensional hard spheres (d = 2, 3) in a periodic box.
+//
+// Design (after Smallenburg, arXiv 2201.01100): one pending event per particle (its earliest
+// predicted collision or cell crossing) in an indexed binary heap; cell lists with cells of at
+// least sigma; particle-local times (a particle's position is stored at the time of its last
+// event); lazy invalidation by per-particle collision counters. Velocities and time are kept in
+// internal units that are rescaled as the gas cools, so event times stay O(1); the physical time
+// t = t_offset + theta * tau is kept exactly.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "molchaos/sim/collision.hpp"
+#include "molchaos/sim/parameters.hpp"
+#include "molchaos/sim/result.hpp"
+#include "molchaos/sim/rng.hpp"
+
+namespace molchaos::sim {
+
+/// The last collision, for tests of the collision rule (physical units).
+struct CollisionRecord {
+  std::int32_t i = -1, j = -1;
+  double normal_velocity = 0;                  // (v_i - v_j).e before the collision
+  double restitution_used = 1;                 // 1 when the TC model made it elastic
+  double energy_before = 0, energy_after = 0;  // of the pair i, j (before any shuffle)
+};
+
+template <int D>
+class Engine {
+ public:
+  /// Builds the initial state: random non-overlapping positions, Maxwell velocities with zero
+  /// momentum and T = 1 exactly. Throws std::runtime_error when the density is too high to place
+  /// the particles. Does not relax (call relax()).
+  explicit Engine(const Parameters& p);
+
+  /// Elastic dynamics (no shuffle) for the given collisions per particle, then T rescaled to 1,
+  /// time and counters reset to 0.
+  void relax(double collisions_per_particle);
+
+  /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
+  void set_state(const std::vector<double>& positions, const std::vector<double>& velocities);
+
+  enum class Status { reached, paused, stopped };
+  /// Processes every event before physical time t (>= time()); then time() == t. Returns paused
+  /// after max_events events (for progress reports), stopped when a stop condition fired first
+  /// (stop_reason() says which).
+  Status advance_to(double t, std::uint64_t max_events = std::numeric_limits<std::uint64_t>::max());
+  /// Processes exactly one event (tests). Returns stopped when a stop condition fired.
+  Status step();
+
+  double time() const;  // physical
+  double box() const { return box_; }
+  std::int32_t size() const { return n_; }
+  double temperature() const;     // from the velocities, T = <v^2>/d
+  double kinetic_energy() const;  // sum v^2 / 2
+  std::array<double, D> momentum() const;
+  std::uint64_t collisions() const { return collisions_; }
+  std::uint64_t events() const { return events_; }
+  const std::string& stop_reason() const { return stop_reason_; }
+  const CollisionRecord& last_collision() const { return last_collision_; }
+  int cells_per_side() const { return cells_per_side_; }
+
+  /// Smallest pair distance now (cell-list search over neighbouring cells); the engine guarantees
+  /// it is never below 1 - 1e-10. For tests and the debug check.
+  double min_pair_distance() const;
+  /// Throws std::logic_error if a pair is closer than 1 - 1e-10.
+  void check_overlaps() const;
+
+  /// Observables at the current time.
+  Sample sample();  // takes (and resets) the contact moments accumulated since the last call
+  Snapshot snapshot() const;
+
+  /// Run settings that may change between relaxation and the cooling run.
+  void set_restitution(double eps) { rule_.restitution = eps; }
+  void set_randomization(Randomization mode) { mode_ = mode; }
+  void set_contact_statistics(bool on) { contacts_on_ = on; }
+  void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
+  void set_min_temperature(double t_min) { min_temperature_ = t_min; }
+  void set_tc(double tc) { tc_ = tc; }
+  /// Full overlap check every `every` events (0 = never); throws std::logic_error on overlap.
+  void set_debug_overlap_check(std::uint64_t every) { debug_check_every_ = every; }
+
+  /// Approximate heap memory held by the engine's arrays, in bytes.
+  std::size_t memory_bytes() const;
+
+ private:
+  enum class Outcome { reached, resync, paused, stopped };
+  template <class Shuffle>
+  Outcome run_events(double tau_stop, std::uint64_t event_limit, const Shuffle& shuffle);
+  Outcome dispatch(double tau_stop, std::uint64_t event_limit);
+  template <class Shuffle>
+  void collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle);
+  void cross_cell(std::int32_t i);
+  void predict(std::int32_t i);
+  void predict_slab(std::int32_t i, int axis, int direction);
+  double pair_time(std::int32_t i, std::int32_t j) const;
+  void crossing(std::int32_t i);
+  void advance_particle(std::int32_t i);
+  void resync();
+  void rebuild_events();
+  void sort_by_cell();
+  void place_particles(Rng& rng);
+  void draw_velocities(Rng& rng);
+  void build_cells();
+  int cell_of_position(const double* r) const;
+  void cell_insert(std::int32_t i, int c);
+  void cell_remove(std::int32_t i);
+  void heap_update(std::int32_t i, double t);
+  void heap_sift_up(std::int32_t pos);
+  void heap_sift_down(std::int32_t pos);
+  void position_now(std::int32_t i, double* r) const;
+  void request_stop(std::string reason);
+  double sum_velocity_squared() const;
+  void scale_velocities(double factor);  // and recomputes sum_u2_
+
+  // Geometry.
+  std::int32_t n_ = 0;
+  double box_ = 0, half_box_ = 0;
+  int cells_per_side_ = 0;
+  double cell_width_ = 0;
+
+  // The record a pair prediction reads about the partner, one per particle (48 bytes for d = 2,
+  // one 64-byte cache line for d = 3): an array of small structs rather than separate arrays,
+  // because each prediction touches all of these fields of a random partner at once.
+  struct alignas(D == 3 ? 64 : 16) Particle {
+    double r[D];            // position at the local time t, in [0, box]
+    double v[D];            // velocity, internal units
+    double t;               // local time (tau) of r
+    std::uint32_t counter;  // bumped whenever v changes (lazy invalidation)
+    std::int32_t cell;
+  };
+  std::vector<Particle> part_;
+  std::vector<std::int32_t> id_;  // the particle's original index (snapshots keep that order)
+  // Per-particle event data (structure of arrays).
+  std::vector<double> coll_time_;  // predicted collision (tau) or +inf
+  std::vector<std::int32_t> partner_;
+  std::vector<std::uint32_t> partner_counter_;
+  std::vector<double> cross_time_;  // next cell crossing (tau)
+  std::vector<std::int8_t> cross_axis_;
+  std::vector<double> last_collision_time_;       // tau of the particle's last collision
+  std::vector<std::int32_t> next_, prev_, head_;  // cell lists (doubly linked)
+
+  // Event calendar: indexed binary heap, one entry per particle.
+  struct HeapEntry {
+    double t;
+    std::int32_t particle;
+  };
+  std::vector<HeapEntry> heap_;
+  std::vector<std::int32_t> heap_pos_;
+
+  // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.
+  double now_ = 0, t_offset_ = 0, theta_ = 1;
+  double sum_u2_ = 0;  // sum of internal u^2, updated per collision, recomputed at resync
+  std::uint64_t collisions_ = 0, events_ = 0;
+
+  // Settings.
+  CollisionRule rule_;
+  Randomization mode_ = Randomization::none;
+  double tc_ = 0;
+  bool contacts_on_ = false;
+  std::uint64_t collision_limit_ = 0;
+  double min_temperature_ = 0;
+  std::uint64_t debug_check_every_ = 0;
+  Rng shuffle_rng_;
+
+  // Collapse detector: consecutive collisions closer in time than micro_interval_ (internal
+  // units) to a previous collision of one of the pair.
+  double micro_interval_ = 0;
+  std::uint64_t micro_run_ = 0;
+
+  // Observers.
+  ContactMoments contacts_;
+  CollisionRecord last_collision_;
+  bool stop_ = false;
+  std::string stop_reason_;
+};
+
+extern template class Engine<2>;
+extern template class Engine<3>;
+
+}  // namespace molchaos::sim

@@ -1,0 +1,37 @@
+// The entry point of the engine: run(Parameters) builds the initial state, relaxes it elastically,
+// then runs the cooling gas to t_end and returns the sampled time series.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "molchaos/sim/parameters.hpp"
+#include "molchaos/sim/result.hpp"
+
+namespace molchaos::sim {
+
+using ProgressCallback = std::function<void(double fraction_done)>;
+
+/// Richer progress report for front ends that show a rate.
+struct Progress {
+  double fraction_done = 0;
+  std::uint64_t collisions = 0;
+  std::uint64_t events = 0;
+  double wall_seconds = 0;
+};
+using ProgressReporter = std::function<void(const Progress&)>;
+
+/// Validates p (std::invalid_argument), runs, returns. A run that stops early (collapse,
+/// max_collisions, min_temperature) returns normally; stop_reason says why.
+RunResult run(const Parameters& p, const ProgressCallback& progress = {});
+RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress);
+
+/// Log-spaced sample times: 0, t_first * 10^(j / samples_per_decade) < t_end, and t_end.
+std::vector<double> sample_times(const Parameters& p);
+
+/// Enskog collision frequency per particle at temperature T: 2 n g2 sqrt(pi T) (d = 2),
+/// 4 n g2 sqrt(pi T) (d = 3), with the contact values named in parameters.hpp's conventions.
+double enskog_collision_frequency(int dimension, double density, double temperature);
+double contact_value_g2(int dimension, double density);
+
+}  // namespace molchaos::sim

@@ -1,0 +1,231 @@
+// The result CSV: writer (atomic file replacement) and reader (header back into Parameters).
+#include "molchaos/sim/csv.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace molchaos::sim {
+namespace {
+
+// Shortest representation that reads back to the same double; locale independent.
+std::string num(double x) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, end);
+}
+
+const char* const k_base_columns = "t,T,a2,collisions,events,velocity_mode,density_mode";
+const char* const k_contact_columns =
+    ",contacts,sum_c1e_c2e,sum_c1_dot_c2,sum_gn2,sum_abs_gn,sum_g2";
+
+[[noreturn]] void corrupt(const std::string& what) {
+  throw std::runtime_error("corrupt result file: " + what);
+}
+
+double parse_double(const std::string& text, const std::string& what) {
+  double x = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(first, last, x);
+  if (ec != std::errc() || ptr != last || text.empty()) corrupt(what + " '" + text + "'");
+  return x;
+}
+
+std::uint64_t parse_uint(const std::string& text, const std::string& what) {
+  std::uint64_t x = 0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(first, last, x);
+  if (ec != std::errc() || ptr != last || text.empty()) corrupt(what + " '" + text + "'");
+  return x;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::istringstream in(line);
+  while (std::getline(in, field, sep)) fields.push_back(field);
+  if (!line.empty() && line.back() == sep) fields.emplace_back();
+  return fields;
+}
+
+}  // namespace
+
+void write_csv(const RunResult& r, std::ostream& out) {
+  const Parameters& p = r.parameters;
+  std::string snapshots;
+  for (double t : p.snapshot_times) {
+    if (!snapshots.empty()) snapshots += ' ';
+    snapshots += num(t);
+  }
+  out << "# molchaos simulate: event-driven MD of inelastic hard spheres (sigma = m = 1, T0 = 1)\n"
+      << "# version = " << r.version << "\n"
+      << "# dimension = " << p.dimension << "\n"
+      << "# particles = " << p.particles << "\n"
+      << "# density = " << num(p.density) << "\n"
+      << "# restitution = " << num(p.restitution) << "\n"
+      << "# randomize = " << to_string(p.randomize) << "\n"
+      << "# seed = " << p.seed << "\n"
+      << "# t_end = " << num(p.t_end) << "\n"
+      << "# relax_collisions_per_particle = " << num(p.relax_collisions_per_particle) << "\n"
+      << "# tc = " << num(p.tc) << "\n"
+      << "# samples_per_decade = " << p.samples_per_decade << "\n"
+      << "# t_first_sample = " << num(p.t_first_sample) << "\n"
+      << "# contact_statistics = " << (p.contact_statistics ? "true" : "false") << "\n"
+      << "# snapshot_times = " << snapshots << "\n"
+      << "# max_collisions = " << p.max_collisions << "\n"
+      << "# min_temperature = " << num(p.min_temperature) << "\n"
+      << "# stop_reason = " << r.stop_reason << "\n"
+      << "# collisions = " << r.collisions << "\n"
+      << "# events = " << r.events << "\n"
+      << "# rows = " << r.samples.size() << "\n"
+      << k_base_columns << (p.contact_statistics ? k_contact_columns : "") << "\n";
+  for (const Sample& s : r.samples) {
+    out << num(s.t) << ',' << num(s.temperature) << ',' << num(s.a2) << ',' << s.collisions << ','
+        << s.events << ',' << num(s.velocity_mode) << ',' << num(s.density_mode);
+    if (p.contact_statistics) {
+      const ContactMoments& c = s.contacts;
+      out << ',' << c.count << ',' << num(c.sum_c1e_c2e) << ',' << num(c.sum_c1_dot_c2) << ','
+          << num(c.sum_gn2) << ',' << num(c.sum_abs_gn) << ',' << num(c.sum_g2);
+    }
+    out << '\n';
+  }
+}
+
+void write_csv_file(const RunResult& result, const std::string& path) {
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write " + temporary);
+    write_csv(result, out);
+    out.flush();
+    if (!out) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error("write failed: " + temporary);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+  }
+}
+
+RunResult read_csv(std::istream& in) {
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.empty()) corrupt("empty");
+  if (text.back() != '\n') corrupt("truncated (no final newline)");
+  std::istringstream lines(text);
+  std::string line;
+  std::map<std::string, std::string> header;
+  std::string columns;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] != '#') {
+      columns = line;
+      break;
+    }
+    const auto eq = line.find(" = ");
+    if (eq == std::string::npos) continue;  // the title line
+    header[line.substr(2, eq - 2)] = line.substr(eq + 3);
+  }
+  auto field = [&](const std::string& key) -> const std::string& {
+    const auto it = header.find(key);
+    if (it == header.end()) corrupt("missing header '" + key + "'");
+    return it->second;
+  };
+  RunResult r;
+  Parameters& p = r.parameters;
+  p.dimension = static_cast<int>(parse_uint(field("dimension"), "dimension"));
+  p.particles = static_cast<std::int64_t>(parse_uint(field("particles"), "particles"));
+  p.density = parse_double(field("density"), "density");
+  p.restitution = parse_double(field("restitution"), "restitution");
+  const auto mode = parse_randomization(field("randomize"));
+  if (!mode) corrupt("randomize '" + field("randomize") + "'");
+  p.randomize = *mode;
+  p.seed = parse_uint(field("seed"), "seed");
+  p.t_end = parse_double(field("t_end"), "t_end");
+  p.relax_collisions_per_particle =
+      parse_double(field("relax_collisions_per_particle"), "relax_collisions_per_particle");
+  p.tc = parse_double(field("tc"), "tc");
+  p.samples_per_decade =
+      static_cast<int>(parse_uint(field("samples_per_decade"), "samples_per_decade"));
+  p.t_first_sample = parse_double(field("t_first_sample"), "t_first_sample");
+  const std::string& contacts = field("contact_statistics");
+  if (contacts != "true" && contacts != "false") corrupt("contact_statistics '" + contacts + "'");
+  p.contact_statistics = contacts == "true";
+  for (const auto& t : split(field("snapshot_times"), ' '))
+    if (!t.empty()) p.snapshot_times.push_back(parse_double(t, "snapshot_times"));
+  p.max_collisions = parse_uint(field("max_collisions"), "max_collisions");
+  p.min_temperature = parse_double(field("min_temperature"), "min_temperature");
+  r.version = field("version");
+  r.stop_reason = field("stop_reason");
+  r.collisions = parse_uint(field("collisions"), "collisions");
+  r.events = parse_uint(field("events"), "events");
+  const std::uint64_t rows = parse_uint(field("rows"), "rows");
+
+  const std::string expected =
+      std::string(k_base_columns) + (p.contact_statistics ? k_contact_columns : "");
+  if (columns != expected) corrupt("column line '" + columns + "'");
+  const std::size_t width = split(expected, ',').size();
+  while (std::getline(lines, line)) {
+    const auto f = split(line, ',');
+    if (f.size() != width)
+      corrupt("row " + std::to_string(r.samples.size() + 1) + " has " + std::to_string(f.size()) +
+              " fields");
+    Sample s;
+    s.t = parse_double(f[0], "t");
+    s.temperature = parse_double(f[1], "T");
+    s.a2 = parse_double(f[2], "a2");
+    s.collisions = parse_uint(f[3], "collisions");
+    s.events = parse_uint(f[4], "events");
+    s.velocity_mode = parse_double(f[5], "velocity_mode");
+    s.density_mode = parse_double(f[6], "density_mode");
+    if (p.contact_statistics) {
+      s.contacts.count = parse_uint(f[7], "contacts");
+      s.contacts.sum_c1e_c2e = parse_double(f[8], "sum_c1e_c2e");
+      s.contacts.sum_c1_dot_c2 = parse_double(f[9], "sum_c1_dot_c2");
+      s.contacts.sum_gn2 = parse_double(f[10], "sum_gn2");
+      s.contacts.sum_abs_gn = parse_double(f[11], "sum_abs_gn");
+      s.contacts.sum_g2 = parse_double(f[12], "sum_g2");
+    }
+    r.samples.push_back(s);
+  }
+  if (r.samples.size() != rows)
+    corrupt("truncated: " + std::to_string(r.samples.size()) + " rows of " + std::to_string(rows));
+  return r;
+}
+
+RunResult read_csv_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open " + path);
+  try {
+    return read_csv(in);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
+void write_snapshot_csv(const Snapshot& snapshot, int dimension, std::ostream& out) {
+  out << "# molchaos snapshot\n# t = " << num(snapshot.t) << "\n# box = " << num(snapshot.box)
+      << "\n";
+  out << (dimension == 2 ? "x,y,vx,vy\n" : "x,y,z,vx,vy,vz\n");
+  const std::size_t n = snapshot.positions.size() / static_cast<std::size_t>(dimension);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < dimension; ++a) out << num(snapshot.positions[i * dimension + a]) << ',';
+    for (int a = 0; a < dimension; ++a)
+      out << num(snapshot.velocities[i * dimension + a]) << (a + 1 < dimension ? ',' : '\n');
+  }
+}
+
+}  // namespace molchaos::sim

@@ -1,0 +1,938 @@
+// The event-driven engine: initial state, event loop, cell lists, event calendar, observables.
+// See engine.hpp for the design; the event loop is Engine<D>::run_events.
+#include "molchaos/sim/engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "molchaos/sim/run.hpp"
+
+namespace molchaos::sim {
+namespace {
+
+constexpr double k_inf = std::numeric_limits<double>::infinity();
+// Internal temperature below which velocities are rescaled back to T_internal = 1.
+constexpr double k_rescale_temperature = 1.0 / 16.0;
+// Internal time after which the clock is rebased to 0 (keeps time differences exact).
+constexpr double k_rebase_time = 1000.0;
+// Collapse: this many consecutive collisions, each within k_micro_fraction mean free times of a
+// previous collision of one of its particles.
+constexpr std::uint64_t k_micro_limit = 100000;
+constexpr double k_micro_fraction = 1e-10;
+// Mean number of particles per cell aimed at when choosing the cell width (cells >= sigma).
+constexpr double k_cell_occupancy = 1.5;
+constexpr double k_overlap_tolerance = 1e-10;
+
+template <int D>
+constexpr int stencil_size() {
+  return D == 2 ? 9 : 27;
+}
+
+template <int D>
+void cell_coords(int c, int cps, int* x) {
+  for (int a = 0; a < D; ++a) {
+    x[a] = c % cps;
+    c /= cps;
+  }
+}
+
+template <int D>
+int cell_index(const int* x, int cps) {
+  int c = 0;
+  for (int a = D - 1; a >= 0; --a) c = c * cps + x[a];
+  return c;
+}
+
+inline int wrap(int x, int cps) { return x < 0 ? x + cps : (x >= cps ? x - cps : x); }
+
+// The 3^D cells around c (periodic), c included.
+template <int D>
+void neighbour_cells(int c, int cps, int* out) {
+  int x[D];
+  cell_coords<D>(c, cps, x);
+  int k = 0;
+  if constexpr (D == 2) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int y[2] = {wrap(x[0] + dx, cps), wrap(x[1] + dy, cps)};
+        out[k++] = cell_index<2>(y, cps);
+      }
+  } else {
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int y[3] = {wrap(x[0] + dx, cps), wrap(x[1] + dy, cps), wrap(x[2] + dz, cps)};
+          out[k++] = cell_index<3>(y, cps);
+        }
+  }
+}
+
+// The 3^(D-1) cells that enter the stencil when a particle moves into cell c along `axis` in
+// direction `dir`: the layer at offset dir along axis.
+template <int D>
+int slab_cells(int c, int cps, int axis, int dir, int* out) {
+  int x[D];
+  cell_coords<D>(c, cps, x);
+  x[axis] = wrap(x[axis] + dir, cps);
+  int k = 0;
+  if constexpr (D == 2) {
+    const int other = 1 - axis;
+    for (int d = -1; d <= 1; ++d) {
+      int y[2] = {x[0], x[1]};
+      y[other] = wrap(x[other] + d, cps);
+      out[k++] = cell_index<2>(y, cps);
+    }
+  } else {
+    const int o1 = (axis + 1) % 3, o2 = (axis + 2) % 3;
+    for (int d2 = -1; d2 <= 1; ++d2)
+      for (int d1 = -1; d1 <= 1; ++d1) {
+        int y[3] = {x[0], x[1], x[2]};
+        y[o1] = wrap(x[o1] + d1, cps);
+        y[o2] = wrap(x[o2] + d2, cps);
+        out[k++] = cell_index<3>(y, cps);
+      }
+  }
+  return k;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Construction and initial state.
+
+template <int D>
+Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
+  validate(p);
+  if (p.dimension != D) throw std::invalid_argument("dimension: engine instantiated for another d");
+  n_ = static_cast<std::int32_t>(p.particles);
+  box_ = box_side(p);
+  half_box_ = 0.5 * box_;
+  const double width_target =
+      std::max(1.0, std::pow(k_cell_occupancy / p.density, 1.0 / static_cast<double>(D)));
+  cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
+  cells_per_side_ = std::max(cells_per_side_, std::min(3, static_cast<int>(std::floor(box_))));
+  if (cells_per_side_ < 3)
+    throw std::invalid_argument("particles: box side " + std::to_string(box_) +
+                                " is below 3 sigma; use more particles or a higher density");
+  cell_width_ = box_ / cells_per_side_;
+
+  rule_.restitution = p.restitution;
+  mode_ = p.randomize;
+  tc_ = p.tc;
+  contacts_on_ = p.contact_statistics;
+  collision_limit_ = p.max_collisions;
+  min_temperature_ = p.min_temperature;
+  micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
+
+  const std::size_t n = static_cast<std::size_t>(n_);
+  part_.assign(n, Particle{});
+  id_.resize(n);
+  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
+  coll_time_.assign(n, k_inf);
+  partner_.assign(n, -1);
+  partner_counter_.assign(n, 0);
+  cross_time_.assign(n, k_inf);
+  cross_axis_.assign(n, 0);
+  last_collision_time_.assign(n, -k_inf);
+  next_.assign(n, -1);
+  prev_.assign(n, -1);
+  std::size_t cells = 1;
+  for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
+  head_.assign(cells, -1);
+  heap_.resize(n);
+  heap_pos_.resize(n);
+
+  Rng rng(p.seed);
+  place_particles(rng);
+  draw_velocities(rng);
+  build_cells();
+  rebuild_events();
+}
+
+// Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
+// fraction); otherwise a simple lattice with random vacancies and jitter. Relaxation melts either.
+template <int D>
+void Engine<D>::place_particles(Rng& rng) {
+  const double packing = (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) *
+                         static_cast<double>(n_) / std::pow(box_, D);
+  const double rsa_limit = D == 2 ? 0.25 : 0.2;
+  if (packing < rsa_limit) {
+    const int g = static_cast<int>(std::floor(box_));  // >= 3, width >= 1
+    const double w = box_ / g;
+    std::size_t cells = 1;
+    for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(g);
+    std::vector<std::int32_t> head(cells, -1), next(static_cast<std::size_t>(n_), -1);
+    constexpr int k_attempts = 100000;
+    bool ok = true;
+    for (std::int32_t i = 0; i < n_ && ok; ++i) {
+      int attempt = 0;
+      for (; attempt < k_attempts; ++attempt) {
+        double r[D];
+        int x[D];
+        for (int a = 0; a < D; ++a) {
+          r[a] = rng.uniform() * box_;
+          x[a] = std::min(static_cast<int>(r[a] / w), g - 1);
+        }
+        int stencil[stencil_size<D>()];
+        neighbour_cells<D>(cell_index<D>(x, g), g, stencil);
+        bool free = true;
+        for (int s = 0; s < stencil_size<D>() && free; ++s)
+          for (std::int32_t j = head[stencil[s]]; j >= 0 && free; j = next[j]) {
+            double d2 = 0;
+            for (int a = 0; a < D; ++a) {
+              double d = r[a] - part_[j].r[a];
+              if (d > half_box_) d -= box_;
+              if (d < -half_box_) d += box_;
+              d2 += d * d;
+            }
+            if (d2 <= 1.0 + 1e-9) free = false;
+          }
+        if (!free) continue;
+        for (int a = 0; a < D; ++a) part_[i].r[a] = r[a];
+        const int c = cell_index<D>(x, g);
+        next[i] = head[c];
+        head[c] = i;
+        break;
+      }
+      if (attempt == k_attempts) ok = false;
+    }
+    if (ok) return;
+  }
+  // Lattice: m^D >= N sites of spacing a > 1; N of them chosen at random.
+  int m = static_cast<int>(std::ceil(std::pow(static_cast<double>(n_), 1.0 / D) - 1e-9));
+  while (std::pow(m, D) < n_) ++m;
+  const double a_spacing = box_ / m;
+  if (a_spacing <= 1.0 + 1e-9)
+    throw std::runtime_error(
+        "density " + std::to_string(static_cast<double>(n_) / std::pow(box_, D)) +
+        " is too high to generate a non-overlapping initial state (a simple lattice needs "
+        "n < ~1 sigma^-d)");
+  std::size_t sites = 1;
+  for (int a = 0; a < D; ++a) sites *= static_cast<std::size_t>(m);
+  std::vector<std::int64_t> site(sites);
+  for (std::size_t s = 0; s < sites; ++s) site[s] = static_cast<std::int64_t>(s);
+  const double jitter = 0.99 * (a_spacing - 1.0);
+  for (std::int32_t i = 0; i < n_; ++i) {
+    const std::size_t pick =
+        static_cast<std::size_t>(i) +
+        static_cast<std::size_t>(rng.below(static_cast<std::int64_t>(sites) - i));
+    std::swap(site[static_cast<std::size_t>(i)], site[pick]);
+    std::int64_t s = site[static_cast<std::size_t>(i)];
+    for (int a = 0; a < D; ++a) {
+      const double idx = static_cast<double>(s % m);
+      s /= m;
+      part_[i].r[a] = (idx + 0.5) * a_spacing + (rng.uniform() - 0.5) * jitter;
+    }
+  }
+}
+
+template <int D>
+void Engine<D>::draw_velocities(Rng& rng) {
+  for (auto& particle : part_)
+    for (double& v : particle.v) v = rng.normal();
+  double mean[D] = {};
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) mean[a] += part_[i].v[a];
+  for (int a = 0; a < D; ++a) mean[a] /= n_;
+  double sum = 0;
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) {
+      part_[i].v[a] -= mean[a];
+      sum += part_[i].v[a] * part_[i].v[a];
+    }
+  scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
+  theta_ = 1;
+  t_offset_ = 0;
+  now_ = 0;
+}
+
+template <int D>
+void Engine<D>::set_state(const std::vector<double>& positions,
+                          const std::vector<double>& velocities) {
+  const std::size_t size = static_cast<std::size_t>(n_) * D;
+  if (positions.size() != size || velocities.size() != size)
+    throw std::invalid_argument("set_state: wrong array sizes");
+  for (std::int32_t i = 0; i < n_; ++i) {
+    for (int a = 0; a < D; ++a) {
+      part_[i].r[a] = positions[D * i + a];
+      part_[i].v[a] = velocities[D * i + a];
+    }
+    part_[i].t = 0;
+    part_[i].counter = 0;
+    id_[i] = i;
+  }
+  sum_u2_ = sum_velocity_squared();
+  theta_ = 1;
+  t_offset_ = 0;
+  now_ = 0;
+  std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
+  collisions_ = events_ = 0;
+  micro_run_ = 0;
+  stop_ = false;
+  stop_reason_.clear();
+  build_cells();
+  rebuild_events();
+}
+
+template <int D>
+void Engine<D>::relax(double collisions_per_particle) {
+  const CollisionRule rule = rule_;
+  const Randomization mode = mode_;
+  const std::uint64_t limit = collision_limit_;
+  const double tc = tc_, t_min = min_temperature_;
+  rule_.restitution = 1.0;
+  mode_ = Randomization::none;
+  tc_ = 0;
+  min_temperature_ = 0;
+  const auto target = static_cast<std::uint64_t>(
+      std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
+  if (target > 0) {
+    collision_limit_ = collisions_ + target;
+    for (;;) {
+      const Outcome outcome = dispatch(k_inf, std::numeric_limits<std::uint64_t>::max());
+      if (outcome == Outcome::resync) {
+        resync();
+        continue;
+      }
+      if (outcome != Outcome::paused) break;
+    }
+  }
+  rule_ = rule;
+  mode_ = mode;
+  collision_limit_ = limit;
+  tc_ = tc;
+  min_temperature_ = t_min;
+  stop_ = false;
+  stop_reason_.clear();
+
+  // Back to T = 1 exactly, zero momentum, t = 0.
+  for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
+  double mean[D] = {};
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) mean[a] += part_[i].v[a];
+  double sum = 0;
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) {
+      part_[i].v[a] -= mean[a] / n_;
+      sum += part_[i].v[a] * part_[i].v[a];
+    }
+  scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
+  theta_ = 1;
+  t_offset_ = 0;
+  now_ = 0;
+  for (auto& particle : part_) particle.t = 0;
+  std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
+  collisions_ = events_ = 0;
+  micro_run_ = 0;
+  contacts_ = {};
+  rebuild_events();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The event loop.
+
+template <int D>
+template <class Shuffle>
+auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shuffle& shuffle)
+    -> Outcome {
+  const double rescale_below = k_rescale_temperature * n_ * D;  // in units of sum u^2
+  for (;;) {
+    const HeapEntry top = heap_[0];  // the earliest pending event
+    if (!(top.t < tau_stop)) return Outcome::reached;
+    if (events_ >= event_limit) return Outcome::paused;
+    const std::int32_t i = top.particle;
+    now_ = top.t;
+    ++events_;
+    if (cross_time_[i] < coll_time_[i]) {
+      cross_cell(i);  // moves i to its next cell, looks at the cells that came into range
+    } else {
+      const std::int32_t j = partner_[i];
+      if (part_[j].counter != partner_counter_[i]) {  // partner's velocity changed since: stale
+        predict(i);
+        continue;
+      }
+      collide(i, j, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
+      if (stop_) return Outcome::stopped;
+      if (sum_u2_ < rescale_below || now_ > k_rebase_time) return Outcome::resync;
+    }
+    if (debug_check_every_ != 0 && events_ % debug_check_every_ == 0) check_overlaps();
+  }
+}
+
+template <int D>
+auto Engine<D>::dispatch(double tau_stop, std::uint64_t event_limit) -> Outcome {
+  switch (mode_) {
+    case Randomization::paper:
+      return run_events(tau_stop, event_limit, PaperShuffle{});
+    case Randomization::flux:
+      return run_events(tau_stop, event_limit, FluxShuffle{});
+    case Randomization::none:
+      break;
+  }
+  return run_events(tau_stop, event_limit, NoShuffle{});
+}
+
+template <int D>
+auto Engine<D>::advance_to(double t, std::uint64_t max_events) -> Status {
+  if (stop_) return Status::stopped;
+  const std::uint64_t limit =
+      max_events == std::numeric_limits<std::uint64_t>::max() ? max_events : events_ + max_events;
+  for (;;) {
+    const double tau_stop = (t - t_offset_) / theta_;
+    switch (dispatch(tau_stop, limit)) {
+      case Outcome::reached:
+        now_ = std::max(now_, tau_stop);
+        return Status::reached;
+      case Outcome::resync:
+        resync();
+        continue;
+      case Outcome::paused:
+        return Status::paused;
+      case Outcome::stopped:
+        return Status::stopped;
+    }
+  }
+}
+
+template <int D>
+auto Engine<D>::step() -> Status {
+  if (stop_) return Status::stopped;
+  const Outcome outcome = dispatch(k_inf, events_ + 1);
+  if (outcome == Outcome::resync) resync();
+  return outcome == Outcome::stopped ? Status::stopped : Status::paused;
+}
+
+template <int D>
+template <class Shuffle>
+void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) {
+  advance_particle(i);
+  advance_particle(j);
+  double* vi = part_[i].v;
+  double* vj = part_[j].v;
+  double e[D], dist2 = 0, gn = 0;
+  for (int a = 0; a < D; ++a) {
+    double d = part_[i].r[a] - part_[j].r[a];
+    if (d > half_box_) d -= box_;
+    if (d < -half_box_) d += box_;
+    e[a] = d;
+    dist2 += d * d;
+  }
+  const double inv_dist = 1.0 / std::sqrt(dist2);
+  for (int a = 0; a < D; ++a) {
+    e[a] *= inv_dist;
+    gn += (vi[a] - vj[a]) * e[a];
+  }
+  if (!(gn < 0)) {  // not approaching after all (rounding at a grazing contact): no collision
+    predict(i);
+    predict(j);
+    return;
+  }
+
+  // TC model (Luding & McNamara): elastic if either particle collided less than tc ago.
+  const double since = now_ - std::max(last_collision_time_[i], last_collision_time_[j]);
+  double eps = rule_.restitution;
+  if (tc_ > 0 && since * theta_ < tc_) eps = 1.0;
+  // Inelastic collapse: an unbroken run of collisions ever closer in time.
+  micro_run_ = since < micro_interval_ ? micro_run_ + 1 : 0;
+
+  if (contacts_on_) {
+    const double scale = 1.0 / std::sqrt(2.0 * sum_u2_ / (static_cast<double>(n_) * D));
+    double c1e = 0, c2e = 0, c12 = 0, g2 = 0;
+    for (int a = 0; a < D; ++a) {
+      c1e += vi[a] * e[a];
+      c2e += vj[a] * e[a];
+      c12 += vi[a] * vj[a];
+      g2 += (vi[a] - vj[a]) * (vi[a] - vj[a]);
+    }
+    c1e *= scale;
+    c2e *= scale;
+    const double gne = c1e - c2e;
+    ++contacts_.count;
+    contacts_.sum_c1e_c2e += c1e * c2e;
+    contacts_.sum_c1_dot_c2 += c12 * scale * scale;
+    contacts_.sum_gn2 += gne * gne;
+    contacts_.sum_abs_gn += std::fabs(gne);
+    contacts_.sum_g2 += g2 * scale * scale;
+  }
+
+  double energy_before = 0;
+  for (int a = 0; a < D; ++a) energy_before += vi[a] * vi[a] + vj[a] * vj[a];
+  CollisionRule::apply<D>(vi, vj, e, eps);
+  double energy_after = 0;
+  for (int a = 0; a < D; ++a) energy_after += vi[a] * vi[a] + vj[a] * vj[a];
+  sum_u2_ -= 0.5 * (1.0 - eps * eps) * gn * gn;
+  const double inv_theta2 = 1.0 / (theta_ * theta_);
+  last_collision_ = {
+      i, j, gn / theta_, eps, 0.5 * energy_before * inv_theta2, 0.5 * energy_after * inv_theta2};
+  ++part_[i].counter;
+  ++part_[j].counter;
+  last_collision_time_[i] = last_collision_time_[j] = now_;
+  ++collisions_;
+
+  if constexpr (Shuffle::active) {
+    const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
+    const auto [k, l] = shuffle.template pick<D>([this](std::int32_t m) { return part_[m].v; }, n_,
+                                                 i, j, e, temperature, shuffle_rng_);
+    advance_particle(k);
+    advance_particle(l);
+    exchange_velocities<D>(vi, vj, part_[k].v, part_[l].v, e);
+    ++part_[k].counter;
+    ++part_[l].counter;
+    predict(k);
+    predict(l);
+  }
+  predict(i);
+  predict(j);
+
+  if (micro_run_ >= k_micro_limit)
+    request_stop("collapse: " + std::to_string(k_micro_limit) +
+                 " consecutive collisions less than 1e-10 mean free times apart at t = " +
+                 std::to_string(time()) + " (inelastic collapse; the TC model, tc > 0, avoids it)");
+  if (collision_limit_ != 0 && collisions_ >= collision_limit_) request_stop("max_collisions");
+  if (min_temperature_ > 0 && sum_u2_ * inv_theta2 < min_temperature_ * n_ * D)
+    request_stop("min_temperature");
+}
+
+template <int D>
+void Engine<D>::request_stop(std::string reason) {
+  if (stop_) return;
+  stop_ = true;
+  stop_reason_ = std::move(reason);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Prediction.
+
+template <int D>
+void Engine<D>::advance_particle(std::int32_t i) {
+  const double dt = now_ - part_[i].t;
+  if (dt != 0) {
+    for (int a = 0; a < D; ++a) part_[i].r[a] += part_[i].v[a] * dt;
+    part_[i].t = now_;
+  }
+}
+
+template <int D>
+void Engine<D>::position_now(std::int32_t i, double* r) const {
+  const double dt = now_ - part_[i].t;
+  for (int a = 0; a < D; ++a) r[a] = part_[i].r[a] + part_[i].v[a] * dt;
+}
+
+// Time of contact of i (at now_) and j (at its local time), or +inf: the smaller root of
+// |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)).
+template <int D>
+double Engine<D>::pair_time(std::int32_t i, std::int32_t j) const {
+  const double dtj = now_ - part_[j].t;
+  double b = 0, dr2 = 0, dv2 = 0;
+  for (int a = 0; a < D; ++a) {
+    double d = part_[i].r[a] - (part_[j].r[a] + part_[j].v[a] * dtj);
+    if (d > half_box_) d -= box_;
+    if (d < -half_box_) d += box_;
+    const double dv = part_[i].v[a] - part_[j].v[a];
+    b += d * dv;
+    dr2 += d * d;
+    dv2 += dv * dv;
+  }
+  if (b >= 0) return k_inf;
+  const double c = dr2 - 1.0;
+  const double disc = b * b - dv2 * c;
+  if (disc < 0) return k_inf;
+  const double dt = c / (-b + std::sqrt(disc));
+  return dt > 0 ? now_ + dt : now_;  // c < 0: overlapping by rounding and approaching: now
+}
+
+template <int D>
+void Engine<D>::crossing(std::int32_t i) {
+  int x[D];
+  cell_coords<D>(part_[i].cell, cells_per_side_, x);
+  double best = k_inf;
+  int axis = 0;
+  for (int a = 0; a < D; ++a) {
+    const double u = part_[i].v[a];
+    double dt;
+    if (u > 0) {
+      const double hi = x[a] + 1 == cells_per_side_ ? box_ : (x[a] + 1) * cell_width_;
+      dt = (hi - part_[i].r[a]) / u;
+    } else if (u < 0) {
+      dt = (x[a] * cell_width_ - part_[i].r[a]) / u;
+    } else {
+      continue;
+    }
+    if (dt < best) {
+      best = dt;
+      axis = a;
+    }
+  }
+  cross_time_[i] = now_ + std::max(best, 0.0);
+  cross_axis_[i] = static_cast<std::int8_t>(axis);
+}
+
+template <int D>
+void Engine<D>::predict(std::int32_t i) {
+  advance_particle(i);
+  int stencil[stencil_size<D>()];
+  neighbour_cells<D>(part_[i].cell, cells_per_side_, stencil);
+  double best = k_inf;
+  std::int32_t partner = -1;
+  for (int s = 0; s < stencil_size<D>(); ++s)
+    for (std::int32_t j = head_[stencil[s]]; j >= 0; j = next_[j]) {
+      if (j == i) continue;
+      const double t = pair_time(i, j);
+      if (t < best) {
+        best = t;
+        partner = j;
+      }
+    }
+  coll_time_[i] = best;
+  partner_[i] = partner;
+  partner_counter_[i] = partner >= 0 ? part_[partner].counter : 0;
+  crossing(i);
+  heap_update(i, std::min(best, cross_time_[i]));
+}
+
+// After a cell crossing only the cells that came into range can hold new partners: pairs with
+// the other cells were predicted before, by i or by the partner (whichever changed last).
+template <int D>
+void Engine<D>::predict_slab(std::int32_t i, int axis, int direction) {
+  int slab[stencil_size<D>()];
+  const int count = slab_cells<D>(part_[i].cell, cells_per_side_, axis, direction, slab);
+  double best = coll_time_[i];
+  for (int s = 0; s < count; ++s)
+    for (std::int32_t j = head_[slab[s]]; j >= 0; j = next_[j]) {
+      const double t = pair_time(i, j);
+      if (t < best) {
+        best = t;
+        partner_[i] = j;
+        partner_counter_[i] = part_[j].counter;
+      }
+    }
+  coll_time_[i] = best;
+  crossing(i);
+  heap_update(i, std::min(best, cross_time_[i]));
+}
+
+template <int D>
+void Engine<D>::cross_cell(std::int32_t i) {
+  advance_particle(i);
+  const int axis = cross_axis_[i];
+  const int direction = part_[i].v[axis] > 0 ? 1 : -1;
+  int x[D];
+  cell_coords<D>(part_[i].cell, cells_per_side_, x);
+  double& coordinate = part_[i].r[axis];
+  if (direction > 0) {
+    if (x[axis] + 1 == cells_per_side_) {
+      x[axis] = 0;
+      coordinate = 0.0;
+    } else {
+      ++x[axis];
+      coordinate = x[axis] * cell_width_;
+    }
+  } else {
+    if (x[axis] == 0) {
+      x[axis] = cells_per_side_ - 1;
+      coordinate = box_;
+    } else {
+      coordinate = x[axis] * cell_width_;
+      --x[axis];
+    }
+  }
+  cell_remove(i);
+  cell_insert(i, cell_index<D>(x, cells_per_side_));
+  predict_slab(i, axis, direction);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Units, cells, calendar.
+
+template <int D>
+void Engine<D>::resync() {
+  for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
+  sum_u2_ = sum_velocity_squared();
+  const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
+  double factor = 1.0;
+  if (temperature < k_rescale_temperature && temperature > 0) {
+    factor = 1.0 / std::sqrt(temperature);
+    scale_velocities(factor);
+  }
+  // Physical time is unchanged: t = t_offset + theta tau; velocities u -> f u, so theta -> f theta
+  // and the internal clock restarts at 0.
+  t_offset_ += theta_ * now_;
+  theta_ *= factor;
+  for (auto& t : last_collision_time_) t = (t - now_) / factor;
+  for (auto& particle : part_) particle.t = 0;
+  now_ = 0;
+  rebuild_events();
+}
+
+// Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
+// reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
+// Only called with every particle at now_ and all predictions about to be redone.
+template <int D>
+void Engine<D>::sort_by_cell() {
+  std::vector<std::int32_t> start(head_.size() + 1, 0);
+  for (const auto& particle : part_) ++start[particle.cell + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  std::vector<Particle> sorted(part_.size());
+  std::vector<double> last(part_.size());
+  std::vector<std::int32_t> ids(part_.size());
+  for (std::int32_t i = 0; i < n_; ++i) {
+    const std::int32_t to = start[part_[i].cell]++;
+    sorted[to] = part_[i];
+    last[to] = last_collision_time_[i];
+    ids[to] = id_[i];
+  }
+  part_.swap(sorted);
+  last_collision_time_.swap(last);
+  id_.swap(ids);
+  std::fill(head_.begin(), head_.end(), -1);
+  for (std::int32_t i = n_ - 1; i >= 0; --i) cell_insert(i, part_[i].cell);
+}
+
+template <int D>
+void Engine<D>::rebuild_events() {
+  sort_by_cell();
+  for (std::int32_t i = 0; i < n_; ++i) {
+    heap_[i] = {k_inf, i};
+    heap_pos_[i] = i;
+  }
+  for (std::int32_t i = 0; i < n_; ++i) predict(i);
+}
+
+template <int D>
+int Engine<D>::cell_of_position(const double* r) const {
+  int x[D];
+  for (int a = 0; a < D; ++a)
+    x[a] = std::clamp(static_cast<int>(std::floor(r[a] / cell_width_)), 0, cells_per_side_ - 1);
+  return cell_index<D>(x, cells_per_side_);
+}
+
+template <int D>
+void Engine<D>::build_cells() {
+  std::fill(head_.begin(), head_.end(), -1);
+  for (std::int32_t i = 0; i < n_; ++i) {
+    for (int a = 0; a < D; ++a) {
+      double& x = part_[i].r[a];
+      if (x < 0) x += box_;
+      if (x >= box_) x -= box_;
+    }
+    cell_insert(i, cell_of_position(part_[i].r));
+  }
+}
+
+template <int D>
+void Engine<D>::cell_insert(std::int32_t i, int c) {
+  part_[i].cell = c;
+  prev_[i] = -1;
+  next_[i] = head_[c];
+  if (head_[c] >= 0) prev_[head_[c]] = i;
+  head_[c] = i;
+}
+
+template <int D>
+void Engine<D>::cell_remove(std::int32_t i) {
+  if (prev_[i] >= 0)
+    next_[prev_[i]] = next_[i];
+  else
+    head_[part_[i].cell] = next_[i];
+  if (next_[i] >= 0) prev_[next_[i]] = prev_[i];
+}
+
+template <int D>
+void Engine<D>::heap_update(std::int32_t i, double t) {
+  const std::int32_t p = heap_pos_[i];
+  const double old = heap_[p].t;
+  heap_[p].t = t;
+  if (t < old)
+    heap_sift_up(p);
+  else
+    heap_sift_down(p);
+}
+
+template <int D>
+void Engine<D>::heap_sift_up(std::int32_t p) {
+  const HeapEntry e = heap_[p];
+  while (p > 0) {
+    const std::int32_t parent = (p - 1) / 2;
+    if (heap_[parent].t <= e.t) break;
+    heap_[p] = heap_[parent];
+    heap_pos_[heap_[p].particle] = p;
+    p = parent;
+  }
+  heap_[p] = e;
+  heap_pos_[e.particle] = p;
+}
+
+template <int D>
+void Engine<D>::heap_sift_down(std::int32_t p) {
+  const HeapEntry e = heap_[p];
+  for (;;) {
+    std::int32_t child = 2 * p + 1;
+    if (child >= n_) break;
+    if (child + 1 < n_ && heap_[child + 1].t < heap_[child].t) ++child;
+    if (!(heap_[child].t < e.t)) break;
+    heap_[p] = heap_[child];
+    heap_pos_[heap_[p].particle] = p;
+    p = child;
+  }
+  heap_[p] = e;
+  heap_pos_[e.particle] = p;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Observables.
+
+template <int D>
+double Engine<D>::sum_velocity_squared() const {
+  double sum = 0;
+  for (const auto& particle : part_)
+    for (double v : particle.v) sum += v * v;
+  return sum;
+}
+
+template <int D>
+void Engine<D>::scale_velocities(double factor) {
+  for (auto& particle : part_)
+    for (double& v : particle.v) v *= factor;
+  sum_u2_ = sum_velocity_squared();
+}
+
+template <int D>
+double Engine<D>::time() const {
+  return t_offset_ + theta_ * now_;
+}
+
+template <int D>
+double Engine<D>::temperature() const {
+  const double sum = sum_velocity_squared();
+  return sum / (static_cast<double>(n_) * D * theta_ * theta_);
+}
+
+template <int D>
+double Engine<D>::kinetic_energy() const {
+  const double sum = sum_velocity_squared();
+  return 0.5 * sum / (theta_ * theta_);
+}
+
+template <int D>
+std::array<double, D> Engine<D>::momentum() const {
+  std::array<double, D> p{};
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) p[a] += part_[i].v[a] / theta_;
+  return p;
+}
+
+template <int D>
+double Engine<D>::min_pair_distance() const {
+  std::vector<double> r(static_cast<std::size_t>(n_) * D);
+  for (std::int32_t i = 0; i < n_; ++i) position_now(i, &r[D * i]);
+  double best = k_inf;
+  int stencil[stencil_size<D>()];
+  for (std::int32_t i = 0; i < n_; ++i) {
+    neighbour_cells<D>(part_[i].cell, cells_per_side_, stencil);
+    for (int s = 0; s < stencil_size<D>(); ++s)
+      for (std::int32_t j = head_[stencil[s]]; j >= 0; j = next_[j]) {
+        if (j <= i) continue;
+        double d2 = 0;
+        for (int a = 0; a < D; ++a) {
+          double d = r[D * i + a] - r[D * j + a];
+          if (d > half_box_) d -= box_;
+          if (d < -half_box_) d += box_;
+          d2 += d * d;
+        }
+        best = std::min(best, d2);
+      }
+  }
+  return std::sqrt(best);
+}
+
+template <int D>
+void Engine<D>::check_overlaps() const {
+  const double d = min_pair_distance();
+  if (d < 1.0 - k_overlap_tolerance)
+    throw std::logic_error("overlap: closest pair at distance " + std::to_string(d) + " after " +
+                           std::to_string(events_) + " events");
+}
+
+template <int D>
+Sample Engine<D>::sample() {
+  Sample s;
+  s.t = time();
+  double m2 = 0, m4 = 0;
+  for (std::int32_t i = 0; i < n_; ++i) {
+    double u2 = 0;
+    for (int a = 0; a < D; ++a) u2 += part_[i].v[a] * part_[i].v[a];
+    m2 += u2;
+    m4 += u2 * u2;
+  }
+  const double n = static_cast<double>(n_);
+  const double t_internal = m2 / (n * D);
+  s.temperature = t_internal / (theta_ * theta_);
+  s.a2 = m2 > 0 ? static_cast<double>(D) / (D + 2) * (m4 / n) / ((m2 / n) * (m2 / n)) - 1.0 : 0.0;
+  s.collisions = collisions_;
+  s.events = events_;
+
+  // Smallest wavevectors k = 2 pi / L along each axis.
+  const double k = 2.0 * std::numbers::pi / box_;
+  double density_sum = 0, velocity_sum = 0;
+  for (int axis = 0; axis < D; ++axis) {
+    double rho_c = 0, rho_s = 0, j_c[D] = {}, j_s[D] = {};
+    for (std::int32_t i = 0; i < n_; ++i) {
+      double r[D];
+      position_now(i, r);
+      const double c = std::cos(k * r[axis]), sn = std::sin(k * r[axis]);
+      rho_c += c;
+      rho_s += sn;
+      for (int a = 0; a < D; ++a) {
+        j_c[a] += part_[i].v[a] * c;
+        j_s[a] += part_[i].v[a] * sn;
+      }
+    }
+    density_sum += (rho_c * rho_c + rho_s * rho_s) / n;
+    double j2 = 0;
+    for (int a = 0; a < D; ++a) j2 += j_c[a] * j_c[a] + j_s[a] * j_s[a];
+    velocity_sum += t_internal > 0 ? j2 / (n * D * t_internal) : 0.0;
+  }
+  s.density_mode = density_sum / D;
+  s.velocity_mode = velocity_sum / D;
+  s.contacts = contacts_;
+  contacts_ = {};
+  return s;
+}
+
+template <int D>
+Snapshot Engine<D>::snapshot() const {
+  Snapshot snap;
+  snap.t = time();
+  snap.box = box_;
+  snap.positions.resize(static_cast<std::size_t>(n_) * D);
+  snap.velocities.resize(static_cast<std::size_t>(n_) * D);
+  for (std::int32_t i = 0; i < n_; ++i) {
+    double r[D];
+    position_now(i, r);
+    for (int a = 0; a < D; ++a) {
+      double x = r[a];
+      if (x < 0) x += box_;
+      if (x >= box_) x -= box_;
+      snap.positions[D * id_[i] + a] = x;
+      snap.velocities[D * id_[i] + a] = part_[i].v[a] / theta_;
+    }
+  }
+  return snap;
+}
+
+template <int D>
+std::size_t Engine<D>::memory_bytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return bytes(part_) + bytes(id_) + bytes(coll_time_) + bytes(partner_) + bytes(partner_counter_) +
+         bytes(cross_time_) + bytes(cross_axis_) + bytes(last_collision_time_) + bytes(next_) +
+         bytes(prev_) + bytes(head_) + bytes(heap_) + bytes(heap_pos_);
+}
+
+template class Engine<2>;
+template class Engine<3>;
+
+}  // namespace molchaos::sim

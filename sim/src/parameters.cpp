@@ -1,0 +1,87 @@
+// Validation of Parameters and the names of the randomization modes.
+#include "molchaos/sim/parameters.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace molchaos::sim {
+namespace {
+
+std::string number(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+[[noreturn]] void out_of_range(const std::string& field, const std::string& value,
+                               const std::string& range) {
+  throw std::invalid_argument(field + ": value " + value + " is outside the allowed range " +
+                              range);
+}
+
+}  // namespace
+
+std::string_view to_string(Randomization mode) {
+  switch (mode) {
+    case Randomization::none:
+      return "none";
+    case Randomization::paper:
+      return "paper";
+    case Randomization::flux:
+      return "flux";
+  }
+  return "none";
+}
+
+std::optional<Randomization> parse_randomization(std::string_view text) {
+  for (auto mode : {Randomization::none, Randomization::paper, Randomization::flux})
+    if (text == to_string(mode)) return mode;
+  return std::nullopt;
+}
+
+double close_packing_density(int dimension) {
+  // Hexagonal packing of disks, n = 2/sqrt(3); fcc packing of spheres, n = sqrt(2).
+  return dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0);
+}
+
+double box_side(const Parameters& p) {
+  return std::pow(static_cast<double>(p.particles) / p.density, 1.0 / p.dimension);
+}
+
+void validate(const Parameters& p) {
+  if (p.dimension != 2 && p.dimension != 3)
+    out_of_range("dimension", std::to_string(p.dimension), "{2, 3}");
+  if (p.particles < 4 || p.particles > 100'000'000)
+    out_of_range("particles", std::to_string(p.particles), "[4, 100000000]");
+  const double n_max = close_packing_density(p.dimension);
+  if (!(p.density > 0 && p.density < n_max))
+    out_of_range("density", number(p.density),
+                 "(0, " + number(n_max) + ") (close packing for dimension " +
+                     std::to_string(p.dimension) + ")");
+  if (!(p.restitution > 0 && p.restitution <= 1))
+    out_of_range("restitution", number(p.restitution), "(0, 1]");
+  if (!(p.t_end > 0 && std::isfinite(p.t_end))) out_of_range("t_end", number(p.t_end), "(0, inf)");
+  if (!(p.relax_collisions_per_particle >= 0 && std::isfinite(p.relax_collisions_per_particle)))
+    out_of_range("relax_collisions_per_particle", number(p.relax_collisions_per_particle),
+                 "[0, inf)");
+  if (!(p.tc >= 0 && std::isfinite(p.tc))) out_of_range("tc", number(p.tc), "[0, inf)");
+  if (p.samples_per_decade < 1 || p.samples_per_decade > 10000)
+    out_of_range("samples_per_decade", std::to_string(p.samples_per_decade), "[1, 10000]");
+  if (!(p.t_first_sample > 0 && std::isfinite(p.t_first_sample)))
+    out_of_range("t_first_sample", number(p.t_first_sample), "(0, inf)");
+  for (double t : p.snapshot_times)
+    if (!(t >= 0 && t <= p.t_end))
+      out_of_range("snapshot_times", number(t), "[0, t_end] = [0, " + number(p.t_end) + "]");
+  if (!(p.min_temperature >= 0 && p.min_temperature < 1))
+    out_of_range("min_temperature", number(p.min_temperature), "[0, 1)");
+  const double side = box_side(p);
+  if (side < 3.0)
+    throw std::invalid_argument("particles: value " + std::to_string(p.particles) +
+                                " gives a box side " + number(side) +
+                                " below 3 sigma at this density; the allowed range is N >= " +
+                                number(std::ceil(p.density * std::pow(3.0, p.dimension))));
+}
+
+}  // namespace molchaos::sim
