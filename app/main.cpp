@@ -28,6 +28,21 @@ int main(int argc, char** argv) {
   molchaos::app::add_theory_command(app);
   molchaos::app::add_simulate_command(app);
 
+  // A first word that is neither a flag nor a subcommand: name it and list the choices.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::fprintf(stderr, "molchaos: error: unknown subcommand '%s'; allowed: %s\n", argv[1],
+                   names.c_str());
+      return 2;
+    }
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

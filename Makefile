@@ -1,0 +1,62 @@
+# molchaos top-level driver. On a fresh Debian 12 machine, as root:
+#   make reproduce   regenerate the paper's results into results/
+#   make test        build and run the fast test set (what CI runs)
+# Every target first installs the Debian packages that are missing (and says which).
+
+BUILD     ?= build
+JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
+QUICK     ?= 0
+RESULTS   ?= results
+
+# The one list of Debian packages the project needs (build, test, figures, benchmarks, MPI).
+PACKAGES := cmake g++ make git pkg-config ca-certificates \
+            libgsl-dev libeigen3-dev libboost-test-dev libboost-iostreams-dev \
+            libboost-filesystem-dev libboost-system-dev libgnuplot-iostream-dev gnuplot-nox \
+            libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev \
+            libopenmpi-dev openmpi-bin
+
+.PHONY: all deps configure build test test-all reproduce bench clean format
+
+all: build
+
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "[deps] all $(words $(PACKAGES)) Debian packages present"; exit 0; fi; \
+	echo "[deps] missing Debian packages:$$missing"; \
+	if [ "$$(id -u)" != 0 ]; then echo "[deps] run as root (or install them with apt-get) and retry" >&2; exit 1; fi; \
+	echo "[deps] running apt-get update, then apt-get install --no-install-recommends$$missing"; \
+	export DEBIAN_FRONTEND=noninteractive; \
+	apt-get update -q && apt-get install -y -q --no-install-recommends $$missing
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+configure: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Fast set: everything not labelled 'slow'. Stays under ~10 minutes on 2 cores.
+test: build
+	cd $(BUILD) && ctest -LE slow --output-on-failure -j $(JOBS)
+
+test-all: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+reproduce: build
+	@mkdir -p $(RESULTS)
+	$(BUILD)/molchaos reproduce --out $(RESULTS) $(if $(filter 1,$(QUICK)),--quick,)
+
+bench: build
+	@mkdir -p $(RESULTS)/bench
+	@for b in $(BUILD)/bench/bench_*; do [ -x "$$b" ] || continue; echo "== $$b"; \
+	  "$$b" --benchmark_out=$(RESULTS)/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; done
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
+
+clean:
+	rm -rf $(BUILD)

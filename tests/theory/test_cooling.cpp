@@ -1,0 +1,95 @@
+// Haff's law: prefactors against their derivation, the ODE it solves, Enskog's collision
+// frequency, and the paper checks' verdicts.
+#define BOOST_TEST_MODULE theory_cooling
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "molchaos/theory/contact_value.hpp"
+#include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/paper_checks.hpp"
+#include "molchaos/theory/sonine.hpp"
+
+using namespace molchaos::theory;
+
+BOOST_AUTO_TEST_CASE(omega0_closed_forms) {
+  const double pi = std::numbers::pi;
+  for (double n : {0.05, 0.1}) {
+    const double g2d = contact_value_g2_at_density(2, n);
+    const double g3d = contact_value_g2_at_density(3, n);
+    BOOST_TEST(std::abs(cooling_frequency_omega0(2, n, 1.0) - 0.5 * g2d * n * std::sqrt(pi)) <=
+               1e-15);
+    BOOST_TEST(std::abs(cooling_frequency_omega0(3, n, 4.0) -
+                        2.0 / 3.0 * g3d * n * std::sqrt(4 * pi)) <= 1e-15);
+    BOOST_TEST(std::abs(enskog_collision_frequency(2, n, 1.0) - 2 * n * g2d * std::sqrt(pi)) <=
+               1e-15);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(haff_law_solves_the_cooling_equation) {
+  // dT/dt = −(2/d) g2 n v0 μ2 T with v0 = √(2T): check with the predicted τ0 at several times.
+  for (int d : {2, 3}) {
+    CoolingInputs in;
+    in.dimension = d;
+    in.density = 0.1;
+    in.restitution = 0.8;
+    in.quadrature.relative_tolerance = 1e-11;
+    const CoolingPrediction p = predict_cooling(in);
+    for (double t : {0.0, 10.0, 1000.0}) {
+      const double T = haff_temperature(t, 1.0, p.tau0.value);
+      const double h = 1e-4 * (1.0 + t);
+      const double dTdt = (haff_temperature(t + h, 1.0, p.tau0.value) -
+                           haff_temperature(t - h, 1.0, p.tau0.value)) /
+                          (2 * h);
+      const double rhs = -(2.0 / d) * p.g2 * in.density * std::sqrt(2.0 * T) * p.mu2.value * T;
+      BOOST_TEST_INFO("d = " << d << ", t = " << t);
+      BOOST_TEST(std::abs(dTdt - rhs) <= 1e-7 * std::abs(rhs));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(A_is_tau0_times_one_minus_eps_squared) {
+  CoolingInputs in;
+  in.restitution = 0.93;
+  in.correlation_b = 0.02;
+  const CoolingPrediction p = predict_cooling(in);
+  BOOST_TEST(std::abs(p.A.value - p.tau0.value * (1 - 0.93 * 0.93)) <= 1e-12 * p.A.value);
+  // Positive b slows cooling (μ2 coefficient of b is negative): A grows.
+  BOOST_TEST(p.A.value > p.A_uncorrelated.value);
+  // Uncorrelated A = 1/(ω0 (1 + 3/16 a2 + 9/1024 a2²)) exactly.
+  const double a2 = a2_first_sonine(2, 0.93);
+  const double expect = 1.0 / (p.omega0 * (1 + 3.0 / 16 * a2 + 9.0 / 1024 * a2 * a2));
+  BOOST_TEST(std::abs(p.A_uncorrelated.value - expect) <= 1e-9 * expect);
+}
+
+BOOST_AUTO_TEST_CASE(elastic_gas_does_not_cool) {
+  CoolingInputs in;
+  in.restitution = 1.0;
+  const CoolingPrediction p = predict_cooling(in);
+  BOOST_TEST(std::isinf(p.tau0.value));
+  BOOST_TEST(std::abs(p.A.value - 1.0 / p.omega0) <= 1e-9 * p.A.value);  // a2(1) = 0
+}
+
+BOOST_AUTO_TEST_CASE(paper_verdicts) {
+  QuadratureOptions q;
+  q.relative_tolerance = 1e-10;
+  const auto table = expand_collision_moment(2, 2, 0.5, k_paper_dyad_factor, q);
+  const auto rows = coefficient_checks(table);
+  int checked = 0;
+  for (const auto& r : rows) {
+    if (r.quantity.ends_with(" a2")) {
+      BOOST_TEST(r.reproduced.value());
+      ++checked;
+    }
+    if (r.quantity.ends_with(" b")) {
+      BOOST_TEST(!r.reproduced.value());
+      ++checked;
+    }
+  }
+  BOOST_TEST(checked == 2);
+  const auto pre = prefactor_checks(2, q);
+  BOOST_TEST(pre.at(0).reproduced.value());   // ½√(2π)
+  BOOST_TEST(!pre.at(1).reproduced.value());  // 1/3 printed, 1/2 derived for disks
+  const auto pre3 = prefactor_checks(3, q);
+  BOOST_TEST(pre3.at(1).reproduced.value());  // 1/3 is the d = 3 value
+}

@@ -1,0 +1,82 @@
+// The collision moments μ_p of the Enskog–Boltzmann collision integral with the paper's
+// correlated two-particle distribution at contact (its eqs. f2atsigma, fSonin, defmu2),
+// evaluated by quadrature of the defining integral, and their expansion in a2 and b.
+//
+//   μ_p = −½ ∫dc1 ∫dc2 ∫de Θ(−c12·e)|c12·e| f̃(c1) f̃(c2) [1 + b(κ(c1·e)(c2·e) − c1·c2)] Δ(c1^p +
+//   c2^p)
+//
+// f̃(c) = π^{−d/2} e^{−c²}[1 + a2 S2(c²)], κ the dyad factor (3 as printed; d makes the dyad
+// traceless in d dimensions), Δ the change of c1^p + c2^p in a collision with restitution ε,
+// computed by applying the collision rule. g2(σ) is kept outside μ_p, as in the paper's eq. tau0.
+//
+// Reduction (derived in doc/theory.md): e is fixed along x by rotational invariance (factor
+// |S^{d−1}|); c1 = C + g/2, c2 = C − g/2 (unit Jacobian); the centre-of-mass velocity C enters
+// only as a polynomial times e^{−2C²} and is summed by a Gauss–Hermite rule that is exact for it;
+// the approach speed u = −g·e and the tangential speed |g⊥| are integrated by GSL adaptive QAGIU.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "molchaos/theory/estimate.hpp"
+
+namespace molchaos::theory {
+
+struct QuadratureOptions {
+  double relative_tolerance = 1e-10;  ///< requested relative accuracy of each adaptive integral
+  int hermite_order = 0;              ///< Gauss–Hermite points per C component; 0 = exact order
+  std::size_t workspace_intervals = 2000;
+};
+
+/// The printed dyad factor of the paper's eq. dyad_of_e (3, the 3D traceless value).
+inline constexpr double k_paper_dyad_factor = 3.0;
+
+/// μ_p(a2, b; ε) of the full (non-linearised) integrand. p ∈ {2, 4}.
+Estimate collision_moment(int dimension, int p, double restitution, double a2, double b,
+                          double dyad_factor, const QuadratureOptions& options = {});
+
+/// μ2 with the printed dyad factor.
+inline Estimate mu2(int dimension, double restitution, double a2, double b,
+                    const QuadratureOptions& options = {}) {
+  return collision_moment(dimension, 2, restitution, a2, b, k_paper_dyad_factor, options);
+}
+
+/// One term a2^i b^j of μ_p = μ_p(0,0; ε) Σ coefficient · a2^i b^j. The integrand is a
+/// polynomial of degree 2 in a2 and 1 in b, so the six terms are the whole expansion.
+struct ExpansionTerm {
+  std::string name;  ///< "a2", "b", "a2^2", "a2*b", "a2^2*b"
+  int a2_power = 0;
+  int b_power = 0;
+  Estimate integral;     ///< the term's integral (unnormalised)
+  Estimate coefficient;  ///< integral / μ_p(0,0), sign included, with propagated error
+};
+
+struct ExpansionTable {
+  int dimension = 2;
+  int moment = 2;
+  double restitution = 0.0;
+  double dyad_factor = k_paper_dyad_factor;
+  double relative_tolerance = 0.0;
+  Estimate base;  ///< μ_p(0, 0; ε)
+  std::vector<ExpansionTerm> terms;
+  std::size_t integrand_evaluations = 0;
+
+  [[nodiscard]] const ExpansionTerm& term(const std::string& name) const;
+  /// μ_p / μ_p(0,0) assembled from the coefficients.
+  [[nodiscard]] double ratio(double a2, double b) const;
+};
+
+/// The expansion coefficients of μ_p by quadrature, one adaptive integral per term.
+ExpansionTable expand_collision_moment(int dimension, int p, double restitution, double dyad_factor,
+                                       const QuadratureOptions& options = {});
+
+/// a2(ε) of the first Sonine approximation obtained from quadrature: the moment equation
+/// μ4 = (d + 2)(1 + a2) μ2 of the scaled homogeneous cooling state, with μ2, μ4 linearised in a2.
+Estimate a2_from_moments(int dimension, double restitution, const QuadratureOptions& options = {});
+
+/// The Gauss–Hermite order that makes the centre-of-mass sum exact for moment p.
+int exact_hermite_order(int p);
+
+}  // namespace molchaos::theory

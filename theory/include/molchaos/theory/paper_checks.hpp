@@ -1,0 +1,38 @@
+// The paper's printed formulas and coefficients, each set beside what this suite computes.
+// A printed number is a claim: every row carries the paper's value, the computed value with its
+// error, and a verdict; the suite always uses its own value.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "molchaos/theory/collision_moments.hpp"
+
+namespace molchaos::theory {
+
+/// Printed coefficients of μ2/μ2(0,0) (paper eq. mu2a2b): 1 + (3/16) a2 − (63/40) b.
+inline constexpr double k_paper_coefficient_a2 = 3.0 / 16.0;
+inline constexpr double k_paper_coefficient_b = -63.0 / 40.0;
+
+struct PaperCheck {
+  std::string quantity;         ///< what is compared, e.g. "mu2 coefficient of b"
+  std::optional<double> paper;  ///< printed value; empty where the paper prints none
+  double computed = 0.0;
+  double error = 0.0;              ///< error estimate of `computed`
+  std::optional<bool> reproduced;  ///< empty where the paper prints no value
+  std::string note;
+};
+
+/// Verdict rule: reproduced when |paper − computed| ≤ 3·error + 1e-12·|computed| (the last term
+/// for exact closed forms with zero error).
+std::optional<bool> verdict(std::optional<double> paper, double computed, double error);
+
+/// The coefficient rows of μ2/μ2(0,0) ("a2", "a2^2", "b", "a2*b", "a2^2*b") against the paper.
+std::vector<PaperCheck> coefficient_checks(const ExpansionTable& table);
+
+/// Prefactors of the paper's eqs. mu2a2b, tau0 and A (ω0) against the derivation in
+/// cooling.hpp, for dimension d (the paper simulates d = 2).
+std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions& options);
+
+}  // namespace molchaos::theory

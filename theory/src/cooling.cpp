@@ -1,0 +1,79 @@
+// Haff's law prefactors and the kinetic-theory prediction for one state point.
+#include "molchaos/theory/cooling.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "molchaos/theory/contact_value.hpp"
+#include "molchaos/theory/dimension.hpp"
+#include "molchaos/theory/sonine.hpp"
+
+namespace molchaos::theory {
+
+double mu2_maxwell_prefactor(int dimension) {
+  require_dimension(dimension);
+  const double root_2pi = std::sqrt(2.0 * std::numbers::pi);
+  return dimension == 2 ? 0.5 * root_2pi : root_2pi;
+}
+
+double cooling_frequency_omega0(int dimension, double density, double initial_temperature) {
+  require_in_range("initial_temperature", initial_temperature, 0.0,
+                   std::numeric_limits<double>::infinity(), true);
+  const double g2 = contact_value_g2_at_density(dimension, density);
+  return g2 * density * std::sqrt(2.0 * initial_temperature) * mu2_maxwell_prefactor(dimension) /
+         dimension;
+}
+
+double enskog_collision_frequency(int dimension, double density, double temperature) {
+  const double g2 = contact_value_g2_at_density(dimension, density);
+  const double prefactor = dimension == 2 ? 2.0 : 4.0;
+  return prefactor * density * g2 * std::sqrt(std::numbers::pi * temperature);
+}
+
+CoolingPrediction predict_cooling(const CoolingInputs& in) {
+  require_dimension(in.dimension);
+  require_density(in.dimension, in.density);
+  require_restitution(in.restitution);
+  CoolingPrediction out;
+  out.packing_fraction = packing_fraction(in.dimension, in.density);
+  out.g2 = contact_value_g2(in.dimension, out.packing_fraction);
+  out.a2 = in.a2 ? *in.a2 : a2_first_sonine(in.dimension, in.restitution);
+  out.omega0 = cooling_frequency_omega0(in.dimension, in.density, in.initial_temperature);
+  out.enskog_collision_frequency =
+      enskog_collision_frequency(in.dimension, in.density, in.initial_temperature);
+
+  // μ2 and μ2(0,0) by quadrature; their ratio does not depend on ε (Δ(c1² + c2²) ∝ 1 − ε²),
+  // so at ε = 1, where both vanish, it is taken at ε = 1/2.
+  out.mu2 = collision_moment(in.dimension, 2, in.restitution, out.a2, in.correlation_b,
+                             in.dyad_factor, in.quadrature);
+  const double eps_ratio = in.restitution < 1.0 ? in.restitution : 0.5;
+  const Estimate full = in.restitution < 1.0
+                            ? out.mu2
+                            : collision_moment(in.dimension, 2, eps_ratio, out.a2, in.correlation_b,
+                                               in.dyad_factor, in.quadrature);
+  const Estimate base =
+      collision_moment(in.dimension, 2, eps_ratio, 0.0, 0.0, in.dyad_factor, in.quadrature);
+  const Estimate uncorrelated = in.correlation_b == 0.0
+                                    ? full
+                                    : collision_moment(in.dimension, 2, eps_ratio, out.a2, 0.0,
+                                                       in.dyad_factor, in.quadrature);
+  out.mu2_ratio = divide(full, base);
+  const Estimate ratio_uncorrelated = divide(uncorrelated, base);
+
+  // A = 1/(ω0 μ2/μ2(0,0)): independent of ε except through a2 and b.
+  out.A = {1.0 / (out.omega0 * out.mu2_ratio.value),
+           out.mu2_ratio.relative_error() / (out.omega0 * out.mu2_ratio.value)};
+  out.A_uncorrelated = {
+      1.0 / (out.omega0 * ratio_uncorrelated.value),
+      ratio_uncorrelated.relative_error() / (out.omega0 * ratio_uncorrelated.value)};
+  if (in.restitution < 1.0) {
+    const double one_minus_eps2 = 1.0 - in.restitution * in.restitution;
+    out.tau0 = {out.A.value / one_minus_eps2, out.A.error / one_minus_eps2};
+  } else {
+    out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
+  }
+  return out;
+}
+
+}  // namespace molchaos::theory

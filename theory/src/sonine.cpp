@@ -1,0 +1,22 @@
+// Second Sonine polynomial and the first-Sonine a2(ε) in d dimensions.
+#include "molchaos/theory/sonine.hpp"
+
+#include "molchaos/theory/dimension.hpp"
+
+namespace molchaos::theory {
+
+double sonine_s2(int dimension, double x) {
+  const double d = dimension;
+  return 0.5 * x * x - 0.5 * (d + 2.0) * x + d * (d + 2.0) / 8.0;
+}
+
+double a2_first_sonine(int dimension, double restitution) {
+  require_dimension(dimension);
+  require_restitution(restitution);
+  const double d = dimension;
+  const double e = restitution;
+  return 16.0 * (1.0 - e) * (1.0 - 2.0 * e * e) /
+         (9.0 + 24.0 * d - (41.0 - 8.0 * d) * e + 30.0 * e * e * (1.0 - e));
+}
+
+}  // namespace molchaos::theory
