@@ -6,6 +6,8 @@
 namespace molchaos::app {
 
 void add_theory_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
+void add_reproduce_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 
 }  // namespace molchaos::app

@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", molchaos::k_version);
   molchaos::app::add_theory_command(app);
+  molchaos::app::add_sweep_command(app);
+  molchaos::app::add_reproduce_command(app);
   molchaos::app::add_simulate_command(app);
 
   // A first word that is neither a flag nor a subcommand: name it and list the choices.

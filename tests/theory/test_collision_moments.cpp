@@ -147,3 +147,20 @@ BOOST_AUTO_TEST_CASE(bad_arguments) {
   q.relative_tolerance = 0.0;
   BOOST_CHECK_THROW(mu2(2, 0.5, 0, 0, q), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_CASE(contact_integrals_closed_forms) {
+  // J_1 = ∫Θ|g·e|φφ = √(2π) (d = 2), 2√(2π) (d = 3); ⟨D⟩_coll = −1/2 for uncorrelated
+  // Maxwellian pairs with the printed dyad in both dimensions (doc/theory.md).
+  const double root_2pi = std::sqrt(2.0 * std::numbers::pi);
+  for (int d : {2, 3}) {
+    const ContactIntegrals J = contact_integrals(d, 0.0, k_paper_dyad_factor, tight());
+    BOOST_TEST(close(J.one.value, d == 2 ? root_2pi : 2 * root_2pi));
+    BOOST_TEST(close(J.mean_dyad(0.0).value, -0.5));
+    // Round trip: the b that produces a mean dyad is recovered from it.
+    const ContactIntegrals Ja = contact_integrals(d, -0.02, k_paper_dyad_factor, tight());
+    for (double b : {-0.05, 0.0, 0.08}) {
+      const Estimate m = Ja.mean_dyad(b);
+      BOOST_TEST(std::abs(Ja.b_from_mean_dyad(m.value, 0.0).value - b) <= 1e-9);
+    }
+  }
+}

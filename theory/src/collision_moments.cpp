@@ -19,9 +19,14 @@ namespace {
 // Which polynomial in (S2(c1²), S2(c2²), D) multiplies the Maxwellian part of the integrand.
 enum class Weight { full, one, a2, a2_squared, b, a2_b, a2_squared_b };
 
+// What multiplies the weighted distribution: Δ(c1^p + c2^p) for the moments μ_p, or (for the
+// contact averages) 1, the dyad D, or D².
+enum class Observable { moment_change, one, dyad, dyad_squared };
+
 struct IntegrandSpec {
   int dimension = 2;
   int moment = 2;
+  Observable observable = Observable::moment_change;
   double restitution = 1.0;
   double dyad_factor = k_paper_dyad_factor;
   double a2 = 0.0;  // used by Weight::full only
@@ -107,7 +112,21 @@ class MomentIntegrand {
       const double s1 = sonine_s2(d, c1sq);
       const double s2 = sonine_s2(d, c2sq);
       const double dyad = spec_.dyad_factor * c1[0] * c2[0] - c1c2;  // D̂:c1c2, eq. c1Dc2
-      sum += rule_.weights[k] * weight(s1, s2, dyad) * delta;
+      double observable = delta;
+      switch (spec_.observable) {
+        case Observable::moment_change:
+          break;
+        case Observable::one:
+          observable = 1.0;
+          break;
+        case Observable::dyad:
+          observable = dyad;
+          break;
+        case Observable::dyad_squared:
+          observable = dyad * dyad;
+          break;
+      }
+      sum += rule_.weights[k] * weight(s1, s2, dyad) * observable;
     }
     const double maxwell_g = std::exp(-0.5 * (u * u + rho * rho));  // e^{−g²/2}
     const double tangential_measure = d == 2 ? 2.0 : 2.0 * std::numbers::pi * rho;
@@ -228,8 +247,10 @@ NestedResult integrate(const IntegrandSpec& spec, const QuadratureOptions& optio
   check_status(gsl_integration_qagiu(&outer_error, 0.0, 0.0, 0.1, options.workspace_intervals,
                                      outer_ws.get(), &inner_error, &inner_error_error),
                "inner error estimate");
+  // μ_p carries −½ (eq. defmu2); the contact integrals are plain averages over colliding pairs.
+  const double sign_half = spec.observable == Observable::moment_change ? -0.5 : 1.0;
   const double prefactor =
-      -0.5 * unit_sphere_area(spec.dimension) / std::pow(std::numbers::pi, spec.dimension);
+      sign_half * unit_sphere_area(spec.dimension) / std::pow(std::numbers::pi, spec.dimension);
   const double total_error = error + inner_error + inner_error_error;
   return {{prefactor * value, std::abs(prefactor) * total_error}, integrand.evaluations()};
 }
@@ -254,7 +275,8 @@ Estimate collision_moment(int dimension, int p, double restitution, double a2, d
   require_dimension(dimension);
   require_moment(p);
   require_restitution(restitution);
-  IntegrandSpec spec{dimension, p, restitution, dyad_factor, a2, b, Weight::full};
+  IntegrandSpec spec{dimension,   p, Observable::moment_change, restitution, dyad_factor, a2, b,
+                     Weight::full};
   return integrate(spec, options).estimate;
 }
 
@@ -286,7 +308,8 @@ ExpansionTable expand_collision_moment(int dimension, int p, double restitution,
   table.restitution = restitution;
   table.dyad_factor = dyad_factor;
   table.relative_tolerance = options.relative_tolerance;
-  IntegrandSpec spec{dimension, p, restitution, dyad_factor, 0.0, 0.0, Weight::one};
+  IntegrandSpec spec{dimension,  p, Observable::moment_change, restitution, dyad_factor, 0.0, 0.0,
+                     Weight::one};
   NestedResult base = integrate(spec, options);
   table.base = base.estimate;
   table.integrand_evaluations = base.evaluations;
@@ -330,6 +353,39 @@ Estimate a2_from_moments(int dimension, double restitution, const QuadratureOpti
   const double dden = d2 * (A2.error * std::abs(1.0 + k2.value) + std::abs(A2.value) * k2.error) +
                       A4.error * std::abs(k4.value) + std::abs(A4.value) * k4.error;
   return {a2, (dnum + std::abs(a2) * dden) / std::abs(den)};
+}
+
+ContactIntegrals contact_integrals(int dimension, double a2, double dyad_factor,
+                                   const QuadratureOptions& options) {
+  require_dimension(dimension);
+  ContactIntegrals out;
+  IntegrandSpec spec{dimension, 2, Observable::one, 1.0, dyad_factor, a2, 0.0, Weight::full};
+  out.one = integrate(spec, options).estimate;
+  spec.observable = Observable::dyad;
+  out.dyad = integrate(spec, options).estimate;
+  spec.observable = Observable::dyad_squared;
+  out.dyad_squared = integrate(spec, options).estimate;
+  return out;
+}
+
+Estimate ContactIntegrals::mean_dyad(double b) const {
+  const double num = dyad.value + b * dyad_squared.value;
+  const double den = one.value + b * dyad.value;
+  const double err = (dyad.error + std::abs(b) * dyad_squared.error) / std::abs(den) +
+                     std::abs(num / (den * den)) * (one.error + std::abs(b) * dyad.error);
+  return {num / den, err};
+}
+
+Estimate ContactIntegrals::b_from_mean_dyad(double m, double m_error) const {
+  // m = (J_D + b J_DD)/(J_1 + b J_D)  ⇒  b = (m J_1 − J_D)/(J_DD − m J_D).
+  const double num = m * one.value - dyad.value;
+  const double den = dyad_squared.value - m * dyad.value;
+  const double b = num / den;
+  const double dbdm = (one.value * den + num * dyad.value) / (den * den);
+  const double quad = (std::abs(m) * one.error + dyad.error +
+                       std::abs(b) * (dyad_squared.error + std::abs(m) * dyad.error)) /
+                      std::abs(den);
+  return {b, std::abs(dbdm) * m_error + quad};
 }
 
 }  // namespace molchaos::theory

@@ -76,6 +76,19 @@ ExpansionTable expand_collision_moment(int dimension, int p, double restitution,
 /// μ4 = (d + 2)(1 + a2) μ2 of the scaled homogeneous cooling state, with μ2, μ4 linearised in a2.
 Estimate a2_from_moments(int dimension, double restitution, const QuadratureOptions& options = {});
 
+/// Averages over colliding pairs at contact. With the ansatz of eq. f2atsigma the collision-rate
+/// weighted mean of the dyad D = κ(c1·e)(c2·e) − c1·c2 is
+///     ⟨D⟩_coll(b) = (J_D + b J_DD)/(J_1 + b J_D),   J_X = ∫dc1 dc2 de Θ(−c12·e)|c12·e| f̃ f̃ X,
+/// so a measured ⟨D⟩_coll determines b directly, independently of the cooling rate.
+struct ContactIntegrals {
+  Estimate one, dyad, dyad_squared;  ///< J_1, J_D, J_DD at the given a2
+  [[nodiscard]] Estimate mean_dyad(double b) const;
+  [[nodiscard]] Estimate b_from_mean_dyad(double mean_dyad, double mean_dyad_error) const;
+};
+
+ContactIntegrals contact_integrals(int dimension, double a2, double dyad_factor,
+                                   const QuadratureOptions& options = {});
+
 /// The Gauss–Hermite order that makes the centre-of-mass sum exact for moment p.
 int exact_hermite_order(int p);
 

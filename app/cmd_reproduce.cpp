@@ -1,0 +1,97 @@
+// `molchaos reproduce`: regenerates the paper's results into one folder: the figures, REPORT.md,
+// fig4_A_of_eps.csv. Runs are cached in <out>/cache, so an interrupted reproduction resumes.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+#include "molchaos/validation/report.hpp"
+#include "molchaos/validation/reproduce.hpp"
+#include "molchaos/version.hpp"
+#ifdef MOLCHAOS_HAVE_FIGURES
+#include "molchaos/figures/figures.hpp"
+#endif
+
+namespace molchaos::app {
+namespace {
+
+struct ReproduceCliOptions {
+  std::string out = "results";
+  std::string cache;
+  bool quick = false;
+  int seeds = 0;
+  int threads = 0;
+  bool figures = true;
+};
+
+void run_reproduce(const ReproduceCliOptions& o) {
+  auto cfg = o.quick ? validation::ReproduceConfig::quick_look()
+                     : validation::ReproduceConfig::paper_scale();
+  if (o.seeds > 0) cfg.seeds = o.seeds;
+  validation::SweepOptions sweep;
+  sweep.cache_directory =
+      o.cache.empty() ? (std::filesystem::path(o.out) / "cache").string() : o.cache;
+  sweep.threads = o.threads;
+  sweep.version = k_version;
+  sweep.label = o.quick ? "reproduce --quick" : "reproduce";
+  std::filesystem::create_directories(o.out);
+  std::cerr << fmt::format(
+      "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "
+      "plus Fig. 3 and the elastic-limit runs; cache {}\n",
+      o.quick ? "quick look" : "paper scale", cfg.particles, cfg.restitutions.size(),
+      cfg.densities.size(), cfg.seeds, sweep.cache_directory);
+  const auto results = validation::reproduce(cfg, sweep);
+
+  std::vector<std::string> figure_files;
+#ifdef MOLCHAOS_HAVE_FIGURES
+  if (o.figures) {
+    figures::RenderOptions ro;
+    ro.output_directory = o.out;
+    for (const auto& f :
+         {figures::render_fig3(results.fig3, ro), figures::render_fig4(results.fig4, ro),
+          figures::render_b(results.b, ro), figures::render_snapshot(results.snapshot, ro)})
+      for (const auto& file : f.files)
+        if (file.ends_with(".png"))
+          figure_files.push_back(std::filesystem::path(file).filename().string());
+  }
+#endif
+  const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
+  validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
+                                    validation::fig4_csv(results));
+  validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
+                                    validation::report_markdown(results, figure_files, command));
+  std::cout << fmt::format("wrote {}/REPORT.md, {}/fig4_A_of_eps.csv and {} figures in {:.0f} s\n",
+                           o.out, o.out, figure_files.size(), results.seconds);
+  int not_reproduced = 0;
+  for (const auto& row : results.rows)
+    if (row.verdict == "not reproduced" || row.verdict == "contradicted") ++not_reproduced;
+  std::cout << fmt::format(
+      "{} comparison rows, {} of them not reproduced or contradicted (see the report)\n",
+      results.rows.size(), not_reproduced);
+  if (results.failed_runs > 0)
+    throw std::runtime_error(
+        fmt::format("{} run(s) failed; see {}/REPORT.md", results.failed_runs, o.out));
+}
+
+}  // namespace
+
+void add_reproduce_command(CLI::App& app) {
+  auto o = std::make_shared<ReproduceCliOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("reproduce", "Regenerate the paper's figures, REPORT.md and tables");
+  cmd->add_option("--out", o->out, "output folder")->capture_default_str();
+  cmd->add_option("--cache", o->cache, "run cache (default <out>/cache)");
+  cmd->add_flag("--quick", o->quick, "one-minute first look (N = 1000, 3 restitutions, 3 seeds)");
+  cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
+      ->check(integer_in(1, 10000));
+  cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
+      ->check(integer_in(0, 1024));
+  cmd->add_flag("!--no-figures", o->figures, "skip rendering");
+  cmd->callback([o] { run_reproduce(*o); });
+}
+
+}  // namespace molchaos::app

@@ -1,0 +1,60 @@
+// A parameter sweep as a value: which state points, which randomization modes, how many seeds;
+// expanded into run parameters, run, and summarised per state point against kinetic theory.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "molchaos/sim/parameters.hpp"
+#include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/sweep.hpp"
+
+namespace molchaos::validation {
+
+struct EnsembleSpec {
+  int dimension = 2;
+  std::int64_t particles = 5000;
+  std::vector<double> densities{0.05};
+  std::vector<double> restitutions{0.9};
+  std::vector<sim::Randomization> modes{sim::Randomization::none};
+  int seeds = 4;
+  std::uint64_t base_seed = 1;
+  /// Cooling runs last this many kinetic-theory τ0 (T falls to 1/(1 + k)²).
+  double t_end_in_tau0 = 4.0;
+  /// If > 0, every cooling run lasts exactly this long instead.
+  double t_end_fixed = 0.0;
+  /// Duration of elastic (ε = 1) runs.
+  double t_end_elastic = 200.0;
+  int samples_per_decade = 40;
+  double relax_collisions_per_particle = 20.0;
+  bool contact_statistics = true;
+};
+
+/// Throws std::invalid_argument naming the field for an empty or out-of-range spec.
+void validate(const EnsembleSpec& spec);
+
+/// Kinetic-theory τ0 (T0 = 1, b = 0) used to size the runs; +inf at ε = 1.
+double theory_tau0(int dimension, double density, double restitution);
+
+/// All runs, ordered by density, restitution, mode, seed index. Seed index i uses
+/// derive_seed(base_seed, i) at every state point and mode (common random numbers: the modes
+/// and restitutions at one density start from the same relaxed configurations).
+std::vector<sim::Parameters> expand(const EnsembleSpec& spec);
+
+struct PointResult {
+  PointSummary summary;
+  Measurement A_theory;         ///< b = 0
+  Measurement collision_ratio;  ///< ε = 1 only: ω/ω_Enskog, mean ± SE
+};
+
+/// Groups outcomes by (density, restitution, mode) in the order of expand().
+std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<RunOutcome>& runs,
+                                   const WindowRule& rule);
+
+/// Summary table as CSV (header lines with the spec and version, then one row per point) to a
+/// temporary file renamed to path.
+void write_summary_csv(const EnsembleSpec& spec, const std::vector<PointResult>& points,
+                       const std::string& version, const std::string& path);
+
+}  // namespace molchaos::validation

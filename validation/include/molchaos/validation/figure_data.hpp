@@ -1,0 +1,126 @@
+// The data types validation/ produces for figures/ and the report: plain values, no behaviour.
+// figures/ depends on this header only.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace molchaos::validation {
+
+/// A number with its uncertainty (standard error of an ensemble mean, or a fit's standard
+/// deviation, or a quadrature error estimate — the producer says which).
+struct Measurement {
+  double value = 0.0;
+  double error = 0.0;
+};
+
+/// One temperature curve T(t) (t > 0), e.g. one randomization mode averaged over its runs.
+struct TemperatureCurve {
+  std::string label;            ///< legend text, e.g. "original gas (no shuffle)"
+  std::vector<double> t;        ///< physical time
+  std::vector<double> T;        ///< temperature T/T0 (ensemble mean)
+  std::vector<double> T_error;  ///< standard error of the mean (0 for a single run)
+  bool is_theory = false;       ///< a Haff's-law line rather than simulation data
+};
+
+/// Fig. 3 of the paper: T(t) at ε = 0.93, n = 0.05, N = 5000.
+struct Fig3Data {
+  std::string title;
+  std::vector<TemperatureCurve> curves;    ///< simulations and Haff's-law lines
+  std::optional<double> clustering_onset;  ///< detected break-down time of the original gas
+  double inset_log_t_min = 2.5;            ///< inset range in ln t
+  double inset_log_t_max = 3.0;
+};
+
+/// One point of Fig. 4: A = τ0(1 − ε²) at one (n, ε, mode).
+struct APoint {
+  double restitution = 0.0;
+  Measurement A;
+  int runs = 0;
+};
+
+/// A straight line a + b·ε fitted by least squares, with standard errors.
+struct LinearFit {
+  double intercept = 0.0, intercept_error = 0.0;
+  double slope = 0.0, slope_error = 0.0;
+  double chi2_per_dof = 0.0;
+};
+
+/// One data set of a Fig. 4 panel (e.g. "original", "randomized (flux)").
+struct ASeries {
+  std::string label;
+  std::string mode;  ///< "none", "paper", "flux"
+  std::vector<APoint> points;
+  std::optional<LinearFit> fit;
+};
+
+/// One panel of Fig. 4 (one density).
+struct Fig4Panel {
+  double density = 0.0;
+  std::vector<ASeries> series;
+  std::vector<double> theory_restitution;  ///< kinetic-theory A(ε) curve, b = 0
+  std::vector<double> theory_A;
+};
+
+struct Fig4Data {
+  std::string title;
+  std::vector<Fig4Panel> panels;  ///< left: n = 0.05, right: n = 0.1
+};
+
+/// b(ε) three ways, for one density.
+struct BSeries {
+  std::string
+      label;  ///< e.g. "from A, paper's 63/40 and ω0", "from A, suite", "contact statistics"
+  std::vector<double> restitution;
+  std::vector<Measurement> b;
+};
+
+struct BPanel {
+  double density = 0.0;
+  std::vector<BSeries> series;
+};
+
+struct BData {
+  std::string title;
+  std::vector<BPanel> panels;
+};
+
+/// Positions and velocities of the original gas after the clustering onset, plus a coarse-grained
+/// velocity field on a grid (cell centres and mean velocity per cell, empty cells omitted).
+struct SnapshotData {
+  std::string title;
+  double time = 0.0;
+  double box = 0.0;
+  std::vector<double> x, y;                              ///< particle positions
+  std::vector<double> speed;                             ///< |v| / sqrt(<v²>): colour
+  std::vector<double> grid_x, grid_y, grid_vx, grid_vy;  ///< coarse-grained field (arrows)
+};
+
+/// Work–precision data for the theory quadrature: requested tolerance against CPU time and
+/// the error actually reached.
+struct WorkPrecisionPoint {
+  double requested_tolerance = 0.0;
+  double seconds = 0.0;
+  double max_error_reached = 0.0;  ///< max over coefficients of |computed − exact|
+  double max_error_estimate = 0.0;
+};
+
+struct WorkPrecisionData {
+  std::string title;
+  std::vector<WorkPrecisionPoint> points;
+};
+
+/// One row of the comparison table: theory, simulation and the paper on one number.
+struct ComparisonRow {
+  std::string quantity;
+  std::optional<Measurement> theory;
+  std::optional<Measurement> simulation;
+  std::optional<double> paper;
+  std::optional<double> difference_in_se;  ///< (simulation − theory)/combined standard error
+  std::string verdict;                     ///< "reproduced", "not reproduced", "contradicted", ...
+  std::string note;
+};
+
+}  // namespace molchaos::validation

@@ -1,0 +1,24 @@
+// Writing the reproduction out: results/REPORT.md (every table behind every figure, and each
+// claim of the paper with its verdict) and results/fig4_A_of_eps.csv. Files are written to a
+// temporary name and renamed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "molchaos/validation/reproduce.hpp"
+
+namespace molchaos::validation {
+
+/// Writes `text` to path atomically (temporary file in the same folder, then rename).
+void write_file_atomically(const std::string& path, const std::string& text);
+
+/// Fig. 4's data: columns density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err.
+std::string fig4_csv(const ReproduceResults& results);
+
+/// The Markdown report. `figures` lists the figure files (relative to the report) to embed;
+/// `command` is the command line that produced it.
+std::string report_markdown(const ReproduceResults& results,
+                            const std::vector<std::string>& figures, const std::string& command);
+
+}  // namespace molchaos::validation

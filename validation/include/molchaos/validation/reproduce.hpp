@@ -1,0 +1,57 @@
+// The whole reproduction of the paper as one computation: the ensembles behind Figs. 3 and 4,
+// the elastic-limit check of every randomization mode, b(ε) three ways, and the comparison rows
+// of the report. Produces data only; figures/ renders it and report.hpp writes it out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/figure_data.hpp"
+#include "molchaos/validation/sweep.hpp"
+
+namespace molchaos::validation {
+
+struct ReproduceConfig {
+  bool quick = false;
+  std::int64_t particles = 5000;
+  std::vector<double> densities{0.05, 0.1};
+  std::vector<double> restitutions{0.80, 0.82, 0.84, 0.86, 0.88, 0.90, 0.92, 0.94, 0.96, 0.98};
+  int seeds = 8;
+  std::uint64_t base_seed = 1;
+  double t_end_in_tau0 = 4.0;
+  // Fig. 3: ε = 0.93, n = 0.05 up to ln t = 8.
+  double fig3_restitution = 0.93;
+  double fig3_density = 0.05;
+  double fig3_t_end = 3000.0;
+  double elastic_t_end = 200.0;
+  WindowRule window{};
+
+  /// The paper's scale, or the one-minute first look (N = 1000, 3 restitutions, 3 seeds).
+  static ReproduceConfig paper_scale();
+  static ReproduceConfig quick_look();
+};
+
+struct ReproduceResults {
+  ReproduceConfig config;
+  std::string version;
+  EnsembleSpec fig4_spec, fig3_spec, elastic_spec;
+  std::vector<PointResult> fig4_points;     ///< all densities × restitutions × modes
+  std::vector<PointResult> elastic_points;  ///< ε = 1, every mode and density
+  PointResult fig3_original;                ///< ε = 0.93, n = 0.05, no shuffle
+  theory::ExpansionTable coefficients;      ///< μ2 expansion, d = 2, printed dyad
+  std::vector<ComparisonRow> rows;          ///< the report's verdicts
+  Fig3Data fig3;
+  Fig4Data fig4;
+  BData b;
+  SnapshotData snapshot;
+  double seconds = 0.0;
+  int failed_runs = 0;
+  std::vector<std::string> failures;
+};
+
+/// Runs (or loads from the cache) everything and analyses it.
+ReproduceResults reproduce(const ReproduceConfig& config, const SweepOptions& sweep);
+
+}  // namespace molchaos::validation

@@ -1,0 +1,52 @@
+// Ensembles and parameter sweeps: independent runs executed in parallel on the local cores,
+// cached on disk by parameters and code version, resumable after an interruption.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "molchaos/sim/parameters.hpp"
+#include "molchaos/sim/result.hpp"
+
+namespace molchaos::validation {
+
+/// Seed of run `index` of an ensemble: a SplitMix64 hash of (base seed, index). Never derived
+/// from a thread, rank or clock, so a run's result does not depend on who ran it.
+std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index);
+
+/// Canonical text of every parameter (round-trip precision) plus the code version.
+std::string canonical_parameters(const sim::Parameters& p, const std::string& version);
+
+/// Cache file name: 16 hex digits of a 64-bit FNV-1a hash of canonical_parameters().
+std::string cache_key(const sim::Parameters& p, const std::string& version);
+
+struct SweepOptions {
+  std::string cache_directory;  ///< empty: no cache
+  int threads = 0;              ///< 0: std::thread::hardware_concurrency()
+  bool progress = true;         ///< runs done / total, elapsed, estimated time left on stderr
+  std::string label = "sweep";
+  std::string version;  ///< code version for the cache key (molchaos::k_version)
+};
+
+struct RunOutcome {
+  sim::RunResult result;
+  bool ok = false;
+  bool from_cache = false;
+  std::string error;  ///< what went wrong, with the run's parameters
+};
+
+/// Runs every parameter set (dynamic load balance: each worker takes the next undone run).
+/// A failing run is reported in its outcome and on stderr; the others go on. Results come back
+/// in input order. Cache entries that are missing, unreadable, corrupt or for other parameters
+/// are recomputed; every file is written to a temporary name and renamed.
+std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs,
+                                  const SweepOptions& options);
+
+/// Loads a cached run if a valid entry exists (used by run_sweep and by the MPI driver).
+bool load_cached(const sim::Parameters& p, const SweepOptions& options, sim::RunResult& out);
+/// Runs one parameter set and stores it in the cache; throws on failure.
+sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& options);
+
+}  // namespace molchaos::validation

@@ -1,0 +1,133 @@
+// Per-run analysis, ensemble statistics, straight-line fits.
+#include "molchaos/validation/analysis.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+#include "molchaos/sim/run.hpp"
+
+namespace molchaos::validation {
+
+RunAnalysis analyse_run(const sim::RunResult& run, const WindowRule& rule) {
+  RunAnalysis a;
+  const auto& p = run.parameters;
+  a.window = choose_window(run.samples, p.particles, rule);
+  if (!a.window.valid) {
+    a.message = a.window.message;
+    return a;
+  }
+  a.fit = fit_haff(run.samples, a.window.t_start, a.window.t_stop);
+  if (!a.fit.ok) {
+    a.message = a.fit.message;
+    return a;
+  }
+  a.A = a.fit.tau0_unit * (1.0 - p.restitution * p.restitution);
+  double dyad_sum = 0.0, a2_sum = 0.0;
+  std::uint64_t count = 0;
+  int a2_samples = 0;
+  for (const auto& s : run.samples) {
+    if (s.t < a.window.t_start || s.t > a.window.t_stop) continue;
+    a2_sum += s.a2;
+    ++a2_samples;
+    if (s.t > a.window.t_start) {  // contact sums cover the interval ending at s.t
+      dyad_sum += 3.0 * s.contacts.sum_c1e_c2e - s.contacts.sum_c1_dot_c2;
+      count += s.contacts.count;
+    }
+  }
+  a.window_collisions = count;
+  a.mean_dyad = count > 0 ? dyad_sum / static_cast<double>(count) : 0.0;
+  a.a2 = a2_samples > 0 ? a2_sum / a2_samples : 0.0;
+  a.ok = true;
+  return a;
+}
+
+Measurement mean_and_standard_error(const std::vector<double>& values) {
+  Measurement m;
+  if (values.empty()) return m;
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  m.value = sum / static_cast<double>(values.size());
+  if (values.size() < 2) return m;
+  double ss = 0.0;
+  for (double v : values) ss += (v - m.value) * (v - m.value);
+  const double n = static_cast<double>(values.size());
+  m.error = std::sqrt(ss / (n - 1.0) / n);
+  return m;
+}
+
+double collision_frequency_ratio(const sim::RunResult& run) {
+  const auto& p = run.parameters;
+  const double t = run.samples.empty() ? 0.0 : run.samples.back().t;
+  const double T = run.samples.empty() ? 1.0 : run.samples.back().temperature;
+  const double omega =
+      2.0 * static_cast<double>(run.collisions) / (static_cast<double>(p.particles) * t);
+  return omega / sim::enskog_collision_frequency(p.dimension, p.density, T);
+}
+
+LinearFit fit_line(const std::vector<double>& x, const std::vector<Measurement>& y) {
+  const auto n = static_cast<Eigen::Index>(x.size());
+  if (n < 2 || y.size() != x.size())
+    throw std::invalid_argument("fit_line: need at least two points and as many y as x");
+  bool weighted = true;
+  for (const auto& m : y) weighted = weighted && m.error > 0.0;
+  Eigen::MatrixXd X(n, 2);
+  Eigen::VectorXd Y(n), w(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    X(i, 0) = 1.0;
+    X(i, 1) = x[i];
+    Y(i) = y[i].value;
+    w(i) = weighted ? 1.0 / (y[i].error * y[i].error) : 1.0;
+  }
+  const Eigen::MatrixXd XtW = X.transpose() * w.asDiagonal();
+  const Eigen::Matrix2d normal = XtW * X;
+  const Eigen::Vector2d beta = normal.ldlt().solve(XtW * Y);
+  const Eigen::VectorXd r = Y - X * beta;
+  const double chi2 = (r.array() * r.array() * w.array()).sum();
+  const double dof = static_cast<double>(n - 2);
+  Eigen::Matrix2d cov = normal.inverse();
+  LinearFit f;
+  f.chi2_per_dof = dof > 0 ? chi2 / dof : 0.0;
+  // Unweighted: errors from the residual scatter. Weighted: inflate only when χ²/dof > 1.
+  const double scale = weighted ? std::max(1.0, f.chi2_per_dof) : f.chi2_per_dof;
+  cov *= scale;
+  f.intercept = beta(0);
+  f.slope = beta(1);
+  f.intercept_error = std::sqrt(cov(0, 0));
+  f.slope_error = std::sqrt(cov(1, 1));
+  return f;
+}
+
+PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
+                             const WindowRule& rule) {
+  PointSummary s;
+  std::vector<double> A, dyad, a2, tb;
+  for (const auto* r : runs) {
+    const auto& p = r->parameters;
+    s.dimension = p.dimension;
+    s.density = p.density;
+    s.restitution = p.restitution;
+    s.mode = std::string(sim::to_string(p.randomize));
+    const RunAnalysis a = analyse_run(*r, rule);
+    if (!a.ok) {
+      ++s.failed;
+      s.messages.push_back("seed " + std::to_string(p.seed) + ": " + a.message);
+      continue;
+    }
+    ++s.runs;
+    A.push_back(a.A);
+    s.A_by_seed.emplace_back(p.seed, a.A);
+    a2.push_back(a.a2);
+    if (a.window_collisions > 0) dyad.push_back(a.mean_dyad);
+    if (a.window.breakdown.detected) {
+      ++s.breakdowns;
+      tb.push_back(a.window.breakdown.time);
+    }
+  }
+  s.A = mean_and_standard_error(A);
+  s.mean_dyad = mean_and_standard_error(dyad);
+  s.a2 = mean_and_standard_error(a2);
+  s.breakdown_time = mean_and_standard_error(tb);
+  return s;
+}
+
+}  // namespace molchaos::validation

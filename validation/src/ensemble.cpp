@@ -1,0 +1,143 @@
+// Sweep expansion, summaries against theory, summary CSV.
+#include "molchaos/validation/ensemble.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "molchaos/theory/cooling.hpp"
+
+namespace molchaos::validation {
+
+void validate(const EnsembleSpec& s) {
+  if (s.densities.empty()) throw std::invalid_argument("densities: at least one is required");
+  if (s.restitutions.empty()) throw std::invalid_argument("restitutions: at least one is required");
+  if (s.modes.empty()) throw std::invalid_argument("modes: at least one is required");
+  if (s.seeds < 1 || s.seeds > 100000)
+    throw std::invalid_argument("seeds: value " + std::to_string(s.seeds) +
+                                " is outside the allowed range [1, 100000]");
+  if (!(s.t_end_in_tau0 > 0.0 && s.t_end_in_tau0 <= 1e6))
+    throw std::invalid_argument("t_end_in_tau0: must lie in (0, 1e6]");
+  if (!(s.t_end_elastic > 0.0)) throw std::invalid_argument("t_end_elastic: must be > 0");
+  for (const auto& p : expand(s)) sim::validate(p);
+}
+
+double theory_tau0(int dimension, double density, double restitution) {
+  if (restitution >= 1.0) return std::numeric_limits<double>::infinity();
+  theory::CoolingInputs in;
+  in.dimension = dimension;
+  in.density = density;
+  in.restitution = restitution;
+  in.quadrature.relative_tolerance = 1e-8;
+  return theory::predict_cooling(in).tau0.value;
+}
+
+std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
+  std::vector<sim::Parameters> runs;
+  for (double n : s.densities)
+    for (double eps : s.restitutions) {
+      const double t_end = eps >= 1.0 ? s.t_end_elastic
+                           : s.t_end_fixed > 0.0
+                               ? s.t_end_fixed
+                               : s.t_end_in_tau0 * theory_tau0(s.dimension, n, eps);
+      for (auto mode : s.modes)
+        for (int i = 0; i < s.seeds; ++i) {
+          sim::Parameters p;
+          p.dimension = s.dimension;
+          p.particles = s.particles;
+          p.density = n;
+          p.restitution = eps;
+          p.randomize = mode;
+          p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
+          p.t_end = t_end;
+          p.relax_collisions_per_particle = s.relax_collisions_per_particle;
+          p.samples_per_decade = s.samples_per_decade;
+          p.contact_statistics = s.contact_statistics;
+          runs.push_back(p);
+        }
+    }
+  return runs;
+}
+
+std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<RunOutcome>& runs,
+                                   const WindowRule& rule) {
+  std::vector<PointResult> points;
+  std::size_t k = 0;
+  for (double n : spec.densities)
+    for (double eps : spec.restitutions)
+      for (auto mode : spec.modes) {
+        std::vector<const sim::RunResult*> group;
+        std::vector<double> ratios;
+        int failed_runs = 0;
+        std::vector<std::string> errors;
+        for (int i = 0; i < spec.seeds; ++i, ++k) {
+          if (!runs.at(k).ok) {
+            ++failed_runs;
+            errors.push_back(runs[k].error);
+            continue;
+          }
+          group.push_back(&runs[k].result);
+          if (eps >= 1.0) ratios.push_back(collision_frequency_ratio(runs[k].result));
+        }
+        PointResult r;
+        if (eps < 1.0) {
+          r.summary = summarize_point(group, rule);
+          theory::CoolingInputs in;
+          in.dimension = spec.dimension;
+          in.density = n;
+          in.restitution = eps;
+          in.quadrature.relative_tolerance = 1e-10;
+          const auto pred = theory::predict_cooling(in);
+          r.A_theory = {pred.A.value, pred.A.error};
+        } else {
+          r.summary.runs = static_cast<int>(group.size());
+          r.collision_ratio = mean_and_standard_error(ratios);
+        }
+        r.summary.dimension = spec.dimension;
+        r.summary.density = n;
+        r.summary.restitution = eps;
+        r.summary.mode = std::string(sim::to_string(mode));
+        r.summary.failed += failed_runs;
+        for (auto& e : errors) r.summary.messages.push_back(e);
+        points.push_back(std::move(r));
+      }
+  return points;
+}
+
+void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& points,
+                       const std::string& version, const std::string& path) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw std::runtime_error("cannot write " + tmp);
+    out << "# molchaos sweep summary (sigma = m = k_B = 1, T0 = 1)\n";
+    out << "# version = " << version << "\n";
+    out << fmt::format("# dimension = {}\n# particles = {}\n# seeds = {}\n# base_seed = {}\n",
+                       s.dimension, s.particles, s.seeds, s.base_seed);
+    out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
+                       s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
+    out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
+    out << "density,restitution,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
+           "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
+           "collision_ratio,collision_ratio_err\n";
+    for (const auto& p : points) {
+      const auto& m = p.summary;
+      out << fmt::format(
+          "{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},{:."
+          "3g},{:.8g},{:.3g}\n",
+          m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs, m.failed,
+          p.A_theory.value, p.A_theory.error, m.mean_dyad.value, m.mean_dyad.error, m.a2.value,
+          m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
+          p.collision_ratio.value, p.collision_ratio.error);
+    }
+    if (!out.flush()) throw std::runtime_error("write failed: " + tmp);
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+}  // namespace molchaos::validation

@@ -1,0 +1,148 @@
+// Local parallel sweep with an on-disk cache.
+#include "molchaos/validation/sweep.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "molchaos/sim/csv.hpp"
+#include "molchaos/sim/run.hpp"
+
+namespace molchaos::validation {
+
+std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index) {
+  std::uint64_t z = base_seed + 0x9E3779B97F4A7C15ULL * (index + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+std::string canonical_parameters(const sim::Parameters& p, const std::string& version) {
+  std::string s = fmt::format(
+      "version={};dimension={};particles={};density={:.17g};restitution={:.17g};randomize={};"
+      "seed={};t_end={:.17g};relax={:.17g};tc={:.17g};samples_per_decade={};t_first={:.17g};"
+      "contacts={};max_collisions={};min_temperature={:.17g};snapshots=",
+      version, p.dimension, p.particles, p.density, p.restitution, sim::to_string(p.randomize),
+      p.seed, p.t_end, p.relax_collisions_per_particle, p.tc, p.samples_per_decade,
+      p.t_first_sample, p.contact_statistics ? 1 : 0, p.max_collisions, p.min_temperature);
+  for (double t : p.snapshot_times) s += fmt::format("{:.17g},", t);
+  return s;
+}
+
+std::string cache_key(const sim::Parameters& p, const std::string& version) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : canonical_parameters(p, version)) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+namespace {
+
+std::string cache_path(const sim::Parameters& p, const SweepOptions& o) {
+  return (std::filesystem::path(o.cache_directory) / (cache_key(p, o.version) + ".csv")).string();
+}
+
+bool same_parameters(const sim::Parameters& a, const sim::Parameters& b) {
+  return canonical_parameters(a, "") == canonical_parameters(b, "");
+}
+
+}  // namespace
+
+bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult& out) {
+  if (o.cache_directory.empty()) return false;
+  const std::string path = cache_path(p, o);
+  if (!std::filesystem::exists(path)) return false;
+  try {
+    sim::RunResult r = sim::read_csv_file(path);
+    // Snapshots are not stored in the run file; a run that asked for them is recomputed.
+    if (!same_parameters(r.parameters, p) || r.version != o.version || !p.snapshot_times.empty())
+      return false;
+    out = std::move(r);
+    return true;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "[%s] cache entry %s is corrupt (%s); recomputing\n", o.label.c_str(),
+                 path.c_str(), e.what());
+    return false;
+  }
+}
+
+sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& o) {
+  sim::RunResult r = sim::run(p);
+  if (r.stop_reason.rfind("collapse", 0) == 0)
+    throw std::runtime_error("run stopped: " + r.stop_reason);
+  if (!o.cache_directory.empty()) {
+    std::filesystem::create_directories(o.cache_directory);
+    sim::write_csv_file(r, cache_path(p, o));
+  }
+  return r;
+}
+
+std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs, const SweepOptions& o) {
+  std::vector<RunOutcome> out(runs.size());
+  const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> done{0}, cached{0};
+  std::mutex print_mutex;
+  const auto start = std::chrono::steady_clock::now();
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  const std::size_t total = runs.size();
+  const std::size_t every = std::max<std::size_t>(1, total / 20);
+
+  auto report = [&](std::size_t finished) {
+    if (!o.progress) return;
+    if (!tty && finished % every != 0 && finished != total) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t computed = finished - cached.load();
+    const std::size_t left = total - finished;
+    const double per_run = computed > 0 ? elapsed / static_cast<double>(computed) : 0.0;
+    const double eta = per_run * static_cast<double>(left) / threads;
+    std::lock_guard<std::mutex> lock(print_mutex);
+    std::fprintf(stderr,
+                 "%s[%s] %zu/%zu runs done (%zu from cache), elapsed %.0f s, ~%.0f s left%s",
+                 tty ? "\r" : "", o.label.c_str(), finished, total, cached.load(), elapsed, eta,
+                 tty ? (finished == total ? "\n" : "") : "\n");
+    std::fflush(stderr);
+  };
+
+  auto worker = [&] {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= total) return;
+      RunOutcome& outcome = out[i];
+      try {
+        if (load_cached(runs[i], o, outcome.result)) {
+          outcome.from_cache = true;
+          ++cached;
+        } else {
+          outcome.result = run_and_cache(runs[i], o);
+        }
+        outcome.ok = true;
+      } catch (const std::exception& e) {
+        const auto& p = runs[i];
+        outcome.error = fmt::format(
+            "run {} (d={}, N={}, n={}, eps={}, randomize={}, seed={}) failed: {}", i, p.dimension,
+            p.particles, p.density, p.restitution, sim::to_string(p.randomize), p.seed, e.what());
+        std::lock_guard<std::mutex> lock(print_mutex);
+        std::fprintf(stderr, "%s[%s] %s\n", tty ? "\n" : "", o.label.c_str(),
+                     outcome.error.c_str());
+      }
+      report(++done);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  return out;
+}
+
+}  // namespace molchaos::validation
