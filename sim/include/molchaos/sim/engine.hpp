@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,11 @@ class Engine {
   void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
   void set_min_temperature(double t_min) { min_temperature_ = t_min; }
   void set_tc(double tc) { tc_ = tc; }
+  /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
+  void resume() {
+    stop_ = false;
+    stop_reason_.clear();
+  }
   /// Full overlap check every `every` events (0 = never); throws std::logic_error on overlap.
   void set_debug_overlap_check(std::uint64_t every) { debug_check_every_ = every; }
 
@@ -109,6 +115,7 @@ class Engine {
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
+  void grow_cells();
   void heap_update(std::int32_t i, double t);
   void heap_sift_up(std::int32_t pos);
   void heap_sift_down(std::int32_t pos);
@@ -141,8 +148,17 @@ class Engine {
   std::vector<std::uint32_t> partner_counter_;
   std::vector<double> cross_time_;  // next cell crossing (tau)
   std::vector<std::int8_t> cross_axis_;
-  std::vector<double> last_collision_time_;       // tau of the particle's last collision
-  std::vector<std::int32_t> next_, prev_, head_;  // cell lists (doubly linked)
+  std::vector<double> last_collision_time_;  // tau of the particle's last collision
+  // Cell lists as fixed-capacity slot arrays: cell c's members are slots_[c * capacity_ + k],
+  // k < count_[c], so a stencil scan reads contiguous indices and independent partner records.
+  std::vector<std::int32_t> slots_, count_;
+  std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
+  int capacity_ = 0;
+  std::span<const std::int32_t> cell_members(int c) const {
+    return {slots_.data() + static_cast<std::size_t>(c) * capacity_,
+            static_cast<std::size_t>(count_[c])};
+  }
+  std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
   // Event calendar: indexed binary heap, one entry per particle.
   struct HeapEntry {

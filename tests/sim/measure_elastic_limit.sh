@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Elastic-limit check of every randomization mode (issue 3): at restitution 1 the gas is in
+# equilibrium, so its collision frequency per particle, omega = 2 C / (N t), must equal Enskog's,
+# 2 n g2 sqrt(pi T) (d = 2, Henderson g2) or 4 n g2 sqrt(pi T) (d = 3, Carnahan-Starling g2), T = 1.
+# Runs `molchaos simulate` for independent seeds and prints omega/omega_E with its standard error.
+# Usage: tests/sim/measure_elastic_limit.sh BUILD_DIR OUT_DIR [SEEDS] [COLLISIONS_PER_RUN] [N]
+set -euo pipefail
+build=${1:?build dir}; out=${2:?output dir}; seeds=${3:-10}; collisions=${4:-500000}; n=${5:-5000}
+mkdir -p "$out"
+printf "%-3s %-6s %-6s %6s %12s %10s %10s %8s\n" d n mode seeds coll/run ratio stderr dev/se
+for d in 2 3; do
+  for density in 0.05 0.1; do
+    for mode in none paper flux; do
+      ratios=()
+      for seed in $(seq 1 "$seeds"); do
+        t_end=$(python3 -c "
+import math
+d,n,C,N=$d,$density,$collisions,$n
+if d==2:
+    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; w=2*n*g*math.sqrt(math.pi)
+else:
+    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; w=4*n*g*math.sqrt(math.pi)
+print(2*C/(N*w))")
+        f="$out/d${d}_n${density}_${mode}_s${seed}.csv"
+        "$build/molchaos" simulate --quiet --dim "$d" --particles "$n" --density "$density" \
+          --restitution 1 --randomize "$mode" --seed "$seed" --t-end "$t_end" \
+          --samples-per-decade 1 --t-first-sample "$t_end" --out "$f" 2>/dev/null
+        ratios+=("$(python3 -c "
+import math,sys
+d,n,N,t=$d,$density,$n,$t_end
+h={l.split(' = ')[0][2:]:l.split(' = ')[1].strip() for l in open('$f') if l.startswith('# ') and ' = ' in l}
+C=int(h['collisions'])
+if d==2:
+    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; w=2*n*g*math.sqrt(math.pi)
+else:
+    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; w=4*n*g*math.sqrt(math.pi)
+print(2*C/(N*t)/w, C)")")
+      done
+      printf "%s\n" "${ratios[@]}" | python3 -c "
+import sys,math
+rows=[l.split() for l in sys.stdin if l.strip()]
+x=[float(r[0]) for r in rows]; c=sum(int(r[1]) for r in rows)//len(rows)
+m=sum(x)/len(x); se=math.sqrt(sum((v-m)**2 for v in x)/(len(x)-1)/len(x))
+print('%-3s %-6s %-6s %6d %12d %10.5f %10.5f %8.1f' % ('$d','$density','$mode',len(x),c,m,se,(m-1)/se))"
+    done
+  done
+done
