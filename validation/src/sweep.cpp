@@ -64,8 +64,8 @@ bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult
   try {
     sim::RunResult r = sim::read_csv_file(path);
     // Snapshots are not stored in the run file; a run that asked for them is recomputed.
-    if (!same_parameters(r.parameters, p) || r.version != o.version || !p.snapshot_times.empty())
-      return false;
+    // The version is part of the key; the parameters are compared to rule out a hash collision.
+    if (!same_parameters(r.parameters, p) || !p.snapshot_times.empty()) return false;
     out = std::move(r);
     return true;
   } catch (const std::exception& e) {

@@ -16,9 +16,10 @@ struct WindowRule {
   double start_collisions_per_particle = 3.0;
   /// Break-down: the largest-scale density fluctuation |ρ_k|²/N (1 for an ideal homogeneous gas)
   /// or momentum fluctuation |j_k|²/(N d T) (1 without velocity correlations) exceeds these
-  /// thresholds at two consecutive samples. Values far above the single-run scatter (the
-  /// indicators average 2d exponential variables of mean ≲ 1).
-  double density_mode_threshold = 3.0;
+  /// thresholds at two consecutive samples. In a homogeneous gas each indicator averages
+  /// exponential variables of mean ≲ 1 (d for the density, d² for the momentum), so a false
+  /// alarm at 5 has probability e^{−10}·11 ≈ 5e−4 (density, d = 2) per independent sample.
+  double density_mode_threshold = 5.0;
   double velocity_mode_threshold = 5.0;
 };
 
