@@ -13,7 +13,7 @@
 #include "molchaos/validation/reproduce.hpp"
 #include "molchaos/version.hpp"
 #ifdef MOLCHAOS_HAVE_FIGURES
-#include "molchaos/figures/figures.hpp"
+#include "molchaos/figures/render.hpp"
 #endif
 
 namespace molchaos::app {

@@ -1,0 +1,29 @@
+// Closed forms of the μ2 expansion coefficients (derived in doc/theory.md and symbolically by
+// theory/derivations/collision_moments.py). Used only to measure the error the quadrature reaches
+// (tests, work–precision benchmark); the suite's results always come from the quadrature.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace molchaos::theory::reference {
+
+/// μ2(0,0)/(1 − ε²): √(2π)/2 (d = 2), √(2π) (d = 3).
+inline double mu2_maxwell(int dimension) {
+  return (dimension == 2 ? 0.5 : 1.0) * std::sqrt(2.0 * std::numbers::pi);
+}
+
+/// Coefficients of μ2/μ2(0,0) with the printed dyad 3·ee − U. The a2 and b terms are derived by
+/// hand for both d; a2², a2·b, a2²·b symbolically (d = 2; the quadrature gives the same in d = 3).
+inline std::vector<std::pair<std::string, double>> mu2_coefficients() {
+  return {{"a2", 3.0 / 16.0},
+          {"a2^2", 9.0 / 1024.0},
+          {"b", -1.5},
+          {"a2*b", -21.0 / 32.0},
+          {"a2^2*b", 93.0 / 2048.0}};
+}
+
+}  // namespace molchaos::theory::reference
