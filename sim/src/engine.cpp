@@ -120,6 +120,14 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
     throw std::invalid_argument("particles: box side " + std::to_string(box_) +
                                 " is below 3 sigma; use more particles or a higher density");
   cell_width_ = box_ / cells_per_side_;
+  {
+    int middle[D];
+    for (int a = 0; a < D; ++a) middle[a] = 1;
+    int around[stencil_size<D>()];
+    neighbour_cells<D>(middle, cells_per_side_, around);
+    for (int s = 0; s < stencil_size<D>(); ++s)
+      stencil_offset_[s] = around[s] - cell_index<D>(middle, cells_per_side_);
+  }
 
   rule_.restitution = p.restitution;
   mode_ = p.randomize;
@@ -148,8 +156,6 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
   const double mean = static_cast<double>(n_) / static_cast<double>(cells);
   capacity_ = std::max(4, static_cast<int>(std::ceil(3 * mean + 4)));
   slots_.assign(cells * static_cast<std::size_t>(capacity_), -1);
-  heap_.resize(n);
-  heap_pos_.resize(n);
 
   Rng rng(p.seed);
   place_particles(rng);
@@ -346,11 +352,10 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
     -> Outcome {
   const double rescale_below = k_rescale_temperature * n_ * D;  // in units of sum u^2
   for (;;) {
-    const HeapEntry top = heap_[0];  // the earliest pending event
-    if (!(top.t < tau_stop)) return Outcome::reached;
+    const auto [t, i] = calendar_.top();  // the earliest pending event
+    if (!(t < tau_stop)) return Outcome::reached;
     if (events_ >= event_limit) return Outcome::paused;
-    const std::int32_t i = top.particle;
-    now_ = top.t;
+    now_ = t;
     ++events_;
     if (cross_time_[i] < coll_time_[i]) {
       cross_cell(i);  // moves i to its next cell, looks at the cells that came into range
@@ -579,7 +584,14 @@ template <int D>
 void Engine<D>::predict(std::int32_t i) {
   advance_particle(i);
   int stencil[stencil_size<D>()];
-  neighbour_cells<D>(cell_xyz_[i].data(), cells_per_side_, stencil);
+  const int* x = cell_xyz_[i].data();
+  bool interior = true;
+  for (int a = 0; a < D; ++a) interior = interior && x[a] > 0 && x[a] < cells_per_side_ - 1;
+  if (interior) {  // no periodic wrap: fixed offsets
+    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
+  } else {
+    neighbour_cells<D>(x, cells_per_side_, stencil);
+  }
   double best = k_inf;
   std::int32_t partner = -1;
   for (int s = 0; s < stencil_size<D>(); ++s)
@@ -595,7 +607,7 @@ void Engine<D>::predict(std::int32_t i) {
   partner_[i] = partner;
   partner_counter_[i] = partner >= 0 ? part_[partner].counter : 0;
   crossing(i);
-  heap_update(i, std::min(best, cross_time_[i]));
+  calendar_.update(i, std::min(best, cross_time_[i]));
 }
 
 // After a cell crossing only the cells that came into range can hold new partners: pairs with
@@ -616,7 +628,7 @@ void Engine<D>::predict_slab(std::int32_t i, int axis, int direction) {
     }
   coll_time_[i] = best;
   crossing(i);
-  heap_update(i, std::min(best, cross_time_[i]));
+  calendar_.update(i, std::min(best, cross_time_[i]));
 }
 
 template <int D>
@@ -700,11 +712,27 @@ void Engine<D>::sort_by_cell() {
 template <int D>
 void Engine<D>::rebuild_events() {
   sort_by_cell();
-  for (std::int32_t i = 0; i < n_; ++i) {
-    heap_[i] = {k_inf, i};
-    heap_pos_[i] = i;
+  // Calendar buckets: about one event per bucket. The bucket width comes from the mean time to
+  // the particles' next events (measured after predicting with a provisional width).
+  const std::int64_t buckets = 4 * static_cast<std::int64_t>(n_);  // window ~ 4 mean waits
+  double width = calendar_.bucket_width();
+  for (int pass = 0; pass < 2; ++pass) {
+    calendar_.reset(n_, now_, width, buckets);
+    for (std::int32_t i = 0; i < n_; ++i) predict(i);
+    double sum = 0;
+    std::int32_t finite = 0;
+    for (std::int32_t i = 0; i < n_; ++i) {
+      const double wait = calendar_.time(i) - now_;
+      if (wait < k_inf) {
+        sum += wait;
+        ++finite;
+      }
+    }
+    if (finite == 0 || !(sum > 0)) break;
+    const double ideal = sum / finite / n_;  // events arrive at rate ~ n / mean wait
+    if (ideal > 0.5 * width && ideal < 2 * width) break;
+    width = ideal;
   }
-  for (std::int32_t i = 0; i < n_; ++i) predict(i);
 }
 
 template <int D>
@@ -764,59 +792,6 @@ void Engine<D>::cell_remove(std::int32_t i) {
   slot_[last] = slot_[i];
   slot_[i] = -1;
 }
-
-template <int D>
-void Engine<D>::heap_update(std::int32_t i, double t) {
-  const std::int32_t p = heap_pos_[i];
-  const double old = heap_[p].t;
-  heap_[p].t = t;
-  if (t < old)
-    heap_sift_up(p);
-  else
-    heap_sift_down(p);
-}
-
-// A 4-ary heap: half the depth of a binary one, and the four children of a node share a cache
-// line or two, so a sift costs fewer dependent loads.
-template <int D>
-void Engine<D>::heap_sift_up(std::int32_t p) {
-  const HeapEntry e = heap_[p];
-  while (p > 0) {
-    const std::int32_t parent = (p - 1) / 4;
-    if (heap_[parent].t <= e.t) break;
-    heap_[p] = heap_[parent];
-    heap_pos_[heap_[p].particle] = p;
-    p = parent;
-  }
-  heap_[p] = e;
-  heap_pos_[e.particle] = p;
-}
-
-template <int D>
-void Engine<D>::heap_sift_down(std::int32_t p) {
-  const HeapEntry e = heap_[p];
-  for (;;) {
-    const std::int32_t first = 4 * p + 1;
-    if (first >= n_) break;
-    const std::int32_t last = std::min(first + 4, n_);
-    std::int32_t child = first;
-    double t = heap_[first].t;
-    for (std::int32_t c = first + 1; c < last; ++c) {
-      const double tc = heap_[c].t;
-      child = tc < t ? c : child;
-      t = tc < t ? tc : t;
-    }
-    if (!(t < e.t)) break;
-    heap_[p] = heap_[child];
-    heap_pos_[heap_[p].particle] = p;
-    p = child;
-  }
-  heap_[p] = e;
-  heap_pos_[e.particle] = p;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Observables.
 
 template <int D>
 double Engine<D>::sum_velocity_squared() const {
@@ -962,7 +937,7 @@ std::size_t Engine<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(part_) + bytes(id_) + bytes(coll_time_) + bytes(partner_) + bytes(partner_counter_) +
          bytes(cross_time_) + bytes(cross_axis_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
-         bytes(slot_) + bytes(slots_) + bytes(count_) + bytes(heap_) + bytes(heap_pos_);
+         bytes(slot_) + bytes(slots_) + bytes(count_) + calendar_.memory_bytes();
 }
 
 template class Engine<2>;

@@ -1,10 +1,10 @@
 // The event-driven engine for d-dimensional hard spheres (d = 2, 3) in a periodic box.
 //
 // Design (after Smallenburg, arXiv 2201.01100): one pending event per particle (its earliest
-// predicted collision or cell crossing) in an indexed binary heap; cell lists with cells of at
-// least sigma; particle-local times (a particle's position is stored at the time of its last
-// event); lazy invalidation by per-particle collision counters. Velocities and time are kept in
-// internal units that are rescaled as the gas cools, so event times stay O(1); the physical time
+// predicted collision or cell crossing) in a calendar queue (event_calendar.hpp); cell lists with
+// cells of at least sigma; particle-local times (a particle's position is stored at the time of its
+// last event); lazy invalidation by per-particle collision counters. Velocities and time are kept
+// in internal units that are rescaled as the gas cools, so event times stay O(1); the physical time
 // t = t_offset + theta * tau is kept exactly.
 #pragma once
 
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "molchaos/sim/collision.hpp"
+#include "molchaos/sim/event_calendar.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
@@ -116,9 +117,6 @@ class Engine {
   void cell_insert(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
   void grow_cells();
-  void heap_update(std::int32_t i, double t);
-  void heap_sift_up(std::int32_t pos);
-  void heap_sift_down(std::int32_t pos);
   void position_now(std::int32_t i, double* r) const;
   void request_stop(std::string reason);
   double sum_velocity_squared() const;
@@ -129,6 +127,7 @@ class Engine {
   double box_ = 0, half_box_ = 0;
   int cells_per_side_ = 0;
   double cell_width_ = 0;
+  std::array<int, D == 2 ? 9 : 27> stencil_offset_{};  // neighbour cells of an interior cell
 
   // The record a pair prediction reads about the partner, one per particle (48 bytes for d = 2,
   // one 64-byte cache line for d = 3): an array of small structs rather than separate arrays,
@@ -160,13 +159,8 @@ class Engine {
   }
   std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
-  // Event calendar: indexed binary heap, one entry per particle.
-  struct HeapEntry {
-    double t;
-    std::int32_t particle;
-  };
-  std::vector<HeapEntry> heap_;
-  std::vector<std::int32_t> heap_pos_;
+  // Event calendar: one entry per particle.
+  EventCalendar calendar_;
 
   // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.
   double now_ = 0, t_offset_ = 0, theta_ = 1;
