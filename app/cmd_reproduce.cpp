@@ -12,6 +12,7 @@
 #include "molchaos/validation/report.hpp"
 #include "molchaos/validation/reproduce.hpp"
 #include "molchaos/version.hpp"
+#include "sweep_runner.hpp"
 #ifdef MOLCHAOS_HAVE_FIGURES
 #include "molchaos/figures/render.hpp"
 #endif
@@ -37,6 +38,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
       o.cache.empty() ? (std::filesystem::path(o.out) / "cache").string() : o.cache;
   sweep.threads = o.threads;
   sweep.version = k_version;
+  sweep.runner = default_sweep_runner();
   sweep.label = o.quick ? "reproduce --quick" : "reproduce";
   std::filesystem::create_directories(o.out);
   std::cerr << fmt::format(

@@ -13,6 +13,7 @@
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/version.hpp"
+#include "sweep_runner.hpp"
 
 namespace molchaos::app {
 namespace {
@@ -48,6 +49,7 @@ void run_sweep_command(SweepCliOptions& o) {
   so.threads = o.threads;
   so.progress = !o.quiet;
   so.version = k_version;
+  so.runner = default_sweep_runner();
   const auto runs = validation::expand(o.spec);
   const auto outcomes = validation::run_sweep(runs, so);
   const auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});

@@ -22,12 +22,20 @@ std::string canonical_parameters(const sim::Parameters& p, const std::string& ve
 /// Cache file name: 16 hex digits of a 64-bit FNV-1a hash of canonical_parameters().
 std::string cache_key(const sim::Parameters& p, const std::string& version);
 
+struct SweepOptions;
+struct RunOutcome;
+/// Executes a whole sweep somewhere else (e.g. over MPI ranks); must return exactly what the
+/// local run_sweep would, in input order.
+using SweepRunner = std::function<std::vector<RunOutcome>(const std::vector<sim::Parameters>&,
+                                                          const SweepOptions&)>;
+
 struct SweepOptions {
   std::string cache_directory;  ///< empty: no cache
   int threads = 0;              ///< 0: std::thread::hardware_concurrency()
   bool progress = true;         ///< runs done / total, elapsed, estimated time left on stderr
   std::string label = "sweep";
   std::string version;  ///< code version for the cache key (molchaos::k_version)
+  SweepRunner runner;   ///< empty: the local thread pool
 };
 
 struct RunOutcome {
@@ -43,6 +51,10 @@ struct RunOutcome {
 /// are recomputed; every file is written to a temporary name and renamed.
 std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs,
                                   const SweepOptions& options);
+
+/// The local thread pool behind run_sweep (run_sweep delegates to options.runner when set).
+std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& runs,
+                                          const SweepOptions& options);
 
 /// Loads a cached run if a valid entry exists (used by run_sweep and by the MPI driver).
 bool load_cached(const sim::Parameters& p, const SweepOptions& options, sim::RunResult& out);
