@@ -143,8 +143,10 @@ void run_theory(const TheoryOptions& o) {
     std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}  {}\n", r.quantity,
                              r.paper ? fmt::format("{:.6f}", *r.paper) : "-", r.computed, r.error,
                              verdict_text(r));
-  std::cout << fmt::format("\ntraceless dyad ({}·ee − U) instead of the printed 3·ee − U:\n",
-                           o.dimension);
+  std::cout << (o.dimension == 3
+                    ? std::string("\nthe printed dyad 3·ee − U is already traceless in d = 3:\n")
+                    : std::string(
+                          "\ntraceless dyad (2·ee − U) instead of the printed 3·ee − U:\n"));
   for (const auto& t : traceless.terms)
     std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}\n", "μ2 coefficient of " + t.name,
                              "-", t.coefficient.value, t.coefficient.error);

@@ -8,6 +8,7 @@ namespace molchaos::app {
 void add_theory_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_reproduce_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 
 }  // namespace molchaos::app

@@ -8,6 +8,9 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/version.hpp"
+#ifdef MOLCHAOS_HAVE_MPI
+#include "molchaos/mpi/session.hpp"
+#endif
 
 namespace {
 
@@ -22,12 +25,20 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifdef MOLCHAOS_HAVE_MPI
+  // Under mpirun/srun every rank runs main(). Rank 0 parses and runs the command; the others only
+  // compute the runs rank 0 hands out, until the session on rank 0 goes out of scope (on every
+  // return path, usage errors included) and releases them. Without a launcher: no MPI at all.
+  molchaos::mpi::Session mpi_session(argc, argv);
+  if (mpi_session.is_worker()) return mpi_session.serve();
+#endif
   CLI::App app{"molchaos: kinetic theory and event-driven simulation of granular gases"};
   app.require_subcommand(1);
   app.set_version_flag("--version", molchaos::k_version);
   molchaos::app::add_theory_command(app);
   molchaos::app::add_sweep_command(app);
   molchaos::app::add_reproduce_command(app);
+  molchaos::app::add_bench_command(app);
   molchaos::app::add_simulate_command(app);
 
   // A first word that is neither a flag nor a subcommand: name it and list the choices.
