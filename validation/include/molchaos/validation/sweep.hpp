@@ -52,6 +52,9 @@ struct RunOutcome {
 std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs,
                                   const SweepOptions& options);
 
+/// Deletes temporary files of writers that no longer exist (a sweep killed mid-write).
+void remove_stale_temporaries(const std::string& cache_directory);
+
 /// The local thread pool behind run_sweep (run_sweep delegates to options.runner when set).
 std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& runs,
                                           const SweepOptions& options);
