@@ -65,6 +65,7 @@ class Engine {
   const std::string& stop_reason() const { return stop_reason_; }
   const CollisionRecord& last_collision() const { return last_collision_; }
   int cells_per_side() const { return cells_per_side_; }
+  bool uses_neighbour_lists() const { return neighbour_lists_; }
 
   /// Smallest pair distance now (cell-list search over neighbouring cells); the engine guarantees
   /// it is never below 1 - 1e-10. For tests and the debug check.
@@ -106,6 +107,13 @@ class Engine {
   void predict_slab(std::int32_t i, int axis, int direction);
   double pair_time(std::int32_t i, std::int32_t j) const;
   void crossing(std::int32_t i);
+  void shell_exit(std::int32_t i);
+  void rebuild_neighbours(std::int32_t i);
+  void build_neighbour_lists();
+  void collect_neighbours(std::int32_t i, bool only_higher);
+  void add_neighbour(std::int32_t i, std::int32_t j);
+  void remove_neighbour(std::int32_t i, std::int32_t j);
+  void grow_neighbour_lists();
   void advance_particle(std::int32_t i);
   void resync();
   void rebuild_events();
@@ -158,6 +166,17 @@ class Engine {
             static_cast<std::size_t>(count_[c])};
   }
   std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
+
+  // Neighbour lists (dense spheres only): shell centres, lists of nl_capacity_ slots each.
+  bool neighbour_lists_ = false;
+  double shell_ = 0;
+  std::vector<double> center_;
+  std::vector<std::int32_t> nl_, nl_count_;
+  int nl_capacity_ = 0;
+  std::span<const std::int32_t> neighbours(std::int32_t i) const {
+    return {nl_.data() + static_cast<std::size_t>(i) * nl_capacity_,
+            static_cast<std::size_t>(nl_count_[i])};
+  }
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
