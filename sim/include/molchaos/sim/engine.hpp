@@ -1,11 +1,13 @@
 // The event-driven engine for d-dimensional hard spheres (d = 2, 3) in a periodic box.
 //
 // Design (after Smallenburg, arXiv 2201.01100): one pending event per particle (its earliest
-// predicted collision or cell crossing) in a calendar queue (event_calendar.hpp); cell lists with
-// cells of at least sigma; particle-local times (a particle's position is stored at the time of its
-// last event); lazy invalidation by per-particle collision counters. Velocities and time are kept
-// in internal units that are rescaled as the gas cools, so event times stay O(1); the physical time
-// t = t_offset + theta * tau is kept exactly.
+// predicted collision or bookkeeping event) in a calendar queue (event_calendar.hpp);
+// particle-local times (a particle's position is stored at the time of its last event); lazy
+// invalidation by per-particle collision counters. Neighbour search: cell lists with cells of at
+// least sigma and cell-crossing events (disks, dilute spheres), or, for dense spheres, neighbour
+// lists with a shell (a bookkeeping event when a particle leaves its shell). Velocities and time
+// are kept in internal units that are rescaled as the gas cools, so event times stay O(1); the
+// physical time t = t_offset + theta * tau is kept exactly.
 #pragma once
 
 #include <array>
