@@ -81,12 +81,13 @@ std::string report_markdown(const ReproduceResults& r, const std::vector<std::st
        "runs ± its standard error; every theory number carries its quadrature error estimate.\n\n";
   s += fmt::format(
       "Setup: d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density), runs of {} "
+      "(the same {} relaxed initial states for every ε and mode at one density; a point whose A had "
+      "a relative standard error above {:.2f} % got more seeds, see the runs column), runs of {} "
       "kinetic-theory τ0. "
       "Modes: `none` (original gas), `paper` (the paper's shuffle), `flux` (flux-weighted "
       "shuffle).\n\n",
       c.particles, fmt::join(c.densities, ", "), c.restitutions.front(), c.restitutions.back(),
-      c.restitutions.size(), c.seeds, c.seeds, c.t_end_in_tau0);
+      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error, c.t_end_in_tau0);
   if (r.failed_runs > 0) {
     s += fmt::format("**{} run(s) failed**:\n\n", r.failed_runs);
     for (const auto& f : r.failures) s += "- " + f + "\n";

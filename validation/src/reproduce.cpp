@@ -25,6 +25,7 @@ ReproduceConfig ReproduceConfig::quick_look() {
   c.particles = 1000;
   c.restitutions = {0.80, 0.90, 0.96};
   c.seeds = 3;
+  c.target_relative_error = 0.0;  // no second stage: a first look, not the paper's precision
   c.fig3_t_end = 1500.0;
   c.elastic_t_end = 100.0;
   return c;
@@ -133,6 +134,66 @@ SnapshotData make_snapshot(const sim::Snapshot& snap, int grid) {
   return s;
 }
 
+// Second stage: a state point whose A has a relative standard error above the target gets more
+// seeds (all modes, so that paired comparisons stay paired), sized from the first stage's scatter:
+// n_needed = n·(SE/target)², with 20 % margin, capped. Seeds 0..n−1 come from the cache.
+void add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
+                            const SweepOptions& sweep) {
+  if (cfg.target_relative_error <= 0.0) return;
+  std::vector<EnsembleSpec> specs;
+  for (const auto& p : R.fig4_points) {
+    const auto& s = p.summary;
+    if (s.runs < 2 || s.A.value <= 0.0) continue;
+    const double rel = s.A.error / s.A.value;
+    if (rel <= cfg.target_relative_error) continue;
+    const int needed =
+        std::min(cfg.max_seeds,
+                 static_cast<int>(std::ceil(1.2 * cfg.seeds * (rel / cfg.target_relative_error) *
+                                            (rel / cfg.target_relative_error))));
+    bool merged = false;
+    for (auto& spec : specs)
+      if (spec.densities.front() == s.density && spec.restitutions.front() == s.restitution) {
+        spec.seeds = std::max(spec.seeds, needed);
+        merged = true;
+      }
+    if (!merged && needed > cfg.seeds) {
+      EnsembleSpec spec = R.fig4_spec;
+      spec.densities = {s.density};
+      spec.restitutions = {s.restitution};
+      spec.seeds = needed;
+      specs.push_back(spec);
+    }
+  }
+  if (specs.empty()) return;
+  std::vector<sim::Parameters> runs;
+  for (const auto& spec : specs) {
+    const auto r = expand(spec);
+    runs.insert(runs.end(), r.begin(), r.end());
+  }
+  SweepOptions second = sweep;
+  second.label = sweep.label + ", extra seeds";
+  const auto outcomes = run_sweep(runs, second);
+  std::size_t offset = 0;
+  for (const auto& spec : specs) {
+    const std::size_t count = expand(spec).size();
+    const std::vector<RunOutcome> part(
+        outcomes.begin() + static_cast<std::ptrdiff_t>(offset),
+        outcomes.begin() + static_cast<std::ptrdiff_t>(offset + count));
+    offset += count;
+    for (const auto& o : part)
+      if (!o.ok) {
+        ++R.failed_runs;
+        R.failures.push_back(o.error);
+      }
+    for (auto& fresh : summarize(spec, part, cfg.window))
+      for (auto& p : R.fig4_points)
+        if (p.summary.density == fresh.summary.density &&
+            p.summary.restitution == fresh.summary.restitution &&
+            p.summary.mode == fresh.summary.mode)
+          p = std::move(fresh);
+  }
+}
+
 }  // namespace
 
 ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep) {
@@ -180,6 +241,7 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
                                    outcomes.begin() + p4.size() + p3.size());
   const std::vector<RunOutcome> oe(outcomes.begin() + p4.size() + p3.size(), outcomes.end());
   R.fig4_points = summarize(R.fig4_spec, o4, cfg.window);
+  add_seeds_where_needed(R, cfg, sweep);
   const auto fig3_points = summarize(R.fig3_spec, o3, cfg.window);
   R.elastic_points = summarize(R.elastic_spec, oe, cfg.window);
   R.fig3_original = fig3_points.at(0);

@@ -19,6 +19,9 @@ struct ReproduceConfig {
   std::vector<double> densities{0.05, 0.1};
   std::vector<double> restitutions{0.80, 0.82, 0.84, 0.86, 0.88, 0.90, 0.92, 0.94, 0.96, 0.98};
   int seeds = 8;
+  /// Points whose A has a larger relative standard error get more seeds (up to max_seeds).
+  double target_relative_error = 0.0045;
+  int max_seeds = 64;
   std::uint64_t base_seed = 1;
   double t_end_in_tau0 = 4.0;
   // Fig. 3: ε = 0.93, n = 0.05 up to ln t = 8.
