@@ -1,0 +1,51 @@
+// Renders the paper's figures (Fig. 3, Fig. 4, b(ε), a snapshot, the quadrature's work–precision
+// diagram) from the plain data types of validation/ into PNG and PDF files with gnuplot. Next to
+// every figure goes its gnuplot script with the data inline, so the figure can be re-plotted.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "molchaos/validation/figure_data.hpp"
+
+namespace molchaos::figures {
+
+struct RenderOptions {
+  std::string output_directory;  ///< created if missing
+  bool pdf = true;
+  bool png = true;
+  std::string gnuplot_executable = "gnuplot";  ///< looked up on PATH unless it contains a '/'
+};
+
+/// The files a render call wrote, all complete: the images and the gnuplot script (`.gp`).
+struct RenderedFigure {
+  std::vector<std::string> files;
+};
+
+// Every render_* function throws std::invalid_argument naming the offending field when the data
+// cannot be drawn (empty, mismatched vector lengths, non-positive values on a log axis), and
+// std::runtime_error naming the file when gnuplot is missing or fails; on error it leaves no file
+// of its own behind.
+
+/// Fig. 3: T/T0 against ln t, every curve, the clustering onset marked, and an inset magnifying
+/// inset_log_t_min ≤ ln t ≤ inset_log_t_max. Writes fig3_temperature.{png,pdf,gp}.
+RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions& options);
+
+/// Fig. 4: A(ε) = τ0(1 − ε²), one panel per density, error bars, linear fits, kinetic theory.
+/// Writes fig4_A_of_eps.{png,pdf,gp}.
+RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions& options);
+
+/// b(ε), one panel per density, one point set per way of obtaining it.
+/// Writes fig_b_of_eps.{png,pdf,gp}.
+RenderedFigure render_b(const validation::BData& data, const RenderOptions& options);
+
+/// Particles coloured by speed with the coarse-grained velocity field as arrows.
+/// Writes fig_snapshot.{png,pdf,gp}.
+RenderedFigure render_snapshot(const validation::SnapshotData& data, const RenderOptions& options);
+
+/// CPU time against the error reached (and its estimate), log–log, labelled by the requested
+/// tolerance. Writes <basename>.{png,pdf,gp}.
+RenderedFigure render_work_precision(const validation::WorkPrecisionData& data,
+                                     const RenderOptions& options, const std::string& basename);
+
+}  // namespace molchaos::figures

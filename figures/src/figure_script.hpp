@@ -1,0 +1,50 @@
+// The machinery shared by every figure: a gnuplot script with its data inline (written through
+// gnuplot-iostream), run once per terminal, its outputs renamed into place only when complete.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "molchaos/figures/render.hpp"
+
+namespace molchaos::figures::detail {
+
+/// One table of numbers, row by row; written into the script as a gnuplot data block.
+using Rows = std::vector<std::vector<double>>;
+
+/// Size and font of the two terminals; the plot commands are shared between them.
+struct Canvas {
+  int png_width = 1200, png_height = 900;    ///< pixels
+  double pdf_width = 6.0, pdf_height = 4.5;  ///< inches
+};
+
+struct FigureScript {
+  std::string basename;                            ///< file stem, e.g. "fig4_A_of_eps"
+  std::string description;                         ///< comment lines at the top of the script
+  std::vector<std::pair<std::string, Rows>> data;  ///< data block name (without '$') and rows
+  std::string commands;                            ///< plot commands, run once per terminal
+  Canvas canvas;
+};
+
+/// Writes <basename>.gp and the requested images into options.output_directory.
+RenderedFigure render(const FigureScript& script, const RenderOptions& options);
+
+/// A gnuplot string literal (single-quoted, so enhanced-text markup still applies).
+std::string quote(const std::string& text);
+
+/// A number as gnuplot reads it back exactly.
+std::string number(double value);
+
+/// A number for a label: six significant digits (0.05, not 0.050000000000000003).
+std::string label_number(double value);
+
+/// Colour-blind-safe line colours (Okabe–Ito), cycled.
+std::string colour(std::size_t index);
+
+/// Throws std::invalid_argument("<field> ...") unless sizes agree.
+void require_same_size(const std::string& field, std::size_t size, const std::string& other_field,
+                       std::size_t other_size);
+void require_non_empty(const std::string& field, std::size_t size);
+
+}  // namespace molchaos::figures::detail

@@ -1,0 +1,86 @@
+// b(ε), the velocity-correlation coefficient of Eq. (18), one panel per density: inferred from A
+// as the paper does (Eq. 29) and measured from the contact statistics. b = 0 is molecular chaos.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "figure_script.hpp"
+#include "molchaos/figures/render.hpp"
+
+namespace molchaos::figures {
+
+RenderedFigure render_b(const validation::BData& data, const RenderOptions& options) {
+  detail::require_non_empty("BData.panels", data.panels.size());
+  detail::FigureScript script;
+  script.basename = "fig_b_of_eps";
+  script.description =
+      "b(eps), the velocity-correlation coefficient (b = 0: molecular chaos), one panel per\n"
+      "density. Data blocks pP_sS: eps, b, standard error of b, eps as drawn (series are shifted\n"
+      "sideways by a few thousandths so that their error bars do not hide one another).";
+  const auto panels = data.panels.size();
+  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
+  script.canvas.pdf_height = 3.4;
+
+  std::string& c = script.commands;
+  c += "  set multiplot layout 1," + std::to_string(panels);
+  if (!data.title.empty()) c += " title " + detail::quote(data.title);
+  c += "\n  set xlabel 'ε'\n  set ylabel 'b'\n";
+  c += "  set key top right spacing 1.15 samplen 2 box opaque font font_small\n";
+  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
+  c += "  set mxtics 2\n  set mytics 2\n  set tics scale 1.5,0.75\n  set format x '%.2f'\n";
+  c += "  set bars small\n";
+
+  constexpr std::array<const char*, 5> k_point_types{"7", "5", "9", "4", "13"};
+  for (std::size_t p = 0; p < panels; ++p) {
+    const auto& panel = data.panels[p];
+    const std::string field = "BData.panels[" + std::to_string(p) + "]";
+    detail::require_non_empty(field + ".series", panel.series.size());
+    double eps_min = std::numeric_limits<double>::infinity(), eps_max = -eps_min;
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const auto& series = panel.series[s];
+      const std::string series_field = field + ".series[" + std::to_string(s) + "]";
+      detail::require_non_empty(series_field + ".restitution", series.restitution.size());
+      detail::require_same_size(series_field + ".b", series.b.size(), series_field + ".restitution",
+                                series.restitution.size());
+      for (double eps : series.restitution) {
+        eps_min = std::min(eps_min, eps);
+        eps_max = std::max(eps_max, eps);
+      }
+    }
+    const double span = std::max(eps_max - eps_min, 0.05);
+    std::string plot =
+        "  plot 0 with lines linecolor rgb 'black' dashtype (8,5) linewidth 1 "
+        "title 'molecular chaos (b = 0)'";
+    const auto count = panel.series.size();
+    for (std::size_t s = 0; s < count; ++s) {
+      const auto& series = panel.series[s];
+      const double shift =
+          0.006 * span * (static_cast<double>(s) - 0.5 * static_cast<double>(count - 1));
+      detail::Rows rows;
+      for (std::size_t i = 0; i < series.restitution.size(); ++i) {
+        rows.push_back({series.restitution[i], series.b[i].value, std::abs(series.b[i].error),
+                        series.restitution[i] + shift});
+      }
+      const std::string block = "p" + std::to_string(p) + "_s" + std::to_string(s);
+      script.data.emplace_back(block, rows);
+      plot += ", \\\n       $" + block + " using 4:2:3 with yerrorbars pointtype " +
+              k_point_types[s % k_point_types.size()] +
+              " pointsize 1.3*point_scale linewidth 1 linecolor rgb " + detail::colour(s + 1) +
+              " title " + detail::quote(series.label);
+    }
+    const double pad = 0.04 * span;
+    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
+    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
+         "]\n";
+    c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
+    c += plot + "\n";
+  }
+  return detail::render(script, options);
+}
+
+}  // namespace molchaos::figures

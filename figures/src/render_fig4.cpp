@@ -1,0 +1,133 @@
+// Fig. 4 of the paper: A(ε) = τ0(1 − ε²) against ε, one panel per density; the randomized gas
+// (squares) stays flat, the original gas (triangles) depends on ε through b(ε) (Eq. 29); the
+// lines are least-squares fits, the dashed line kinetic theory without correlations.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "figure_script.hpp"
+#include "molchaos/figures/render.hpp"
+
+namespace molchaos::figures {
+namespace {
+
+// The paper's symbols: triangles for the original gas, squares for the randomized one.
+std::string point_type(const std::string& mode, std::size_t index) {
+  if (mode == "none") return "9";   // filled triangle
+  if (mode == "paper") return "5";  // filled square
+  if (mode == "flux") return "4";   // open square
+  constexpr std::array<const char*, 4> k_others{"7", "11", "13", "6"};
+  return k_others[index % k_others.size()];
+}
+
+std::size_t colour_index(const std::string& mode, std::size_t index) {
+  if (mode == "none") return 1;
+  if (mode == "paper") return 2;
+  if (mode == "flux") return 3;
+  return 4 + index;
+}
+
+}  // namespace
+
+RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions& options) {
+  detail::require_non_empty("Fig4Data.panels", data.panels.size());
+  detail::FigureScript script;
+  script.basename = "fig4_A_of_eps";
+  script.description =
+      "Fig. 4 of Poeschel, Brilliantov, Schwager: A(eps) = tau0 (1 - eps^2) against eps, one "
+      "panel\n"
+      "per density. Data blocks pP_sS: eps, A, standard error of A; pP_fitS: the fitted line at\n"
+      "the ends of its eps range; pP_theory: kinetic theory A(eps) with b = 0.";
+  const auto panels = data.panels.size();
+  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
+  script.canvas.pdf_height = 3.4;
+
+  std::string& c = script.commands;
+  c += "  set multiplot layout 1," + std::to_string(panels);
+  if (!data.title.empty()) c += " title " + detail::quote(data.title);
+  c += "\n  set xlabel 'ε'\n  set ylabel 'A  [σ√(m/T_0)]'\n";
+  c += "  set key top left spacing 1.15 samplen 2 box opaque font font_small\n";
+  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
+  c += "  set mxtics 2\n  set mytics 2\n  set tics scale 1.5,0.75\n  set format x '%.2f'\n";
+  c += "  set bars small\n";
+
+  for (std::size_t p = 0; p < panels; ++p) {
+    const auto& panel = data.panels[p];
+    const std::string field = "Fig4Data.panels[" + std::to_string(p) + "]";
+    detail::require_non_empty(field + ".series", panel.series.size());
+    detail::require_same_size(field + ".theory_A", panel.theory_A.size(),
+                              field + ".theory_restitution", panel.theory_restitution.size());
+    const std::string prefix = "p" + std::to_string(p);
+    double eps_min = std::numeric_limits<double>::infinity();
+    double eps_max = -eps_min;
+    std::vector<std::string> elements;
+    bool any_fit = false;
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const auto& series = panel.series[s];
+      const std::string series_field = field + ".series[" + std::to_string(s) + "]";
+      detail::require_non_empty(series_field + ".points", series.points.size());
+      detail::Rows rows;
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (const auto& point : series.points) {
+        rows.push_back({point.restitution, point.A.value, std::abs(point.A.error)});
+        lo = std::min(lo, point.restitution);
+        hi = std::max(hi, point.restitution);
+      }
+      eps_min = std::min(eps_min, lo);
+      eps_max = std::max(eps_max, hi);
+      const std::string block = prefix + "_s" + std::to_string(s);
+      script.data.emplace_back(block, rows);
+      const std::string colour = "linecolor rgb " + detail::colour(colour_index(series.mode, s));
+      if (series.fit) {
+        // The fitted line spans the series' own ε range, as in the paper.
+        const auto& fit = *series.fit;
+        const std::string fit_block = prefix + "_fit" + std::to_string(s);
+        script.data.emplace_back(fit_block, detail::Rows{{lo, fit.intercept + fit.slope * lo},
+                                                         {hi, fit.intercept + fit.slope * hi}});
+        c += "  # " + series.label + ": A = (" + detail::number(fit.intercept) + " ± " +
+             detail::number(fit.intercept_error) + ") + (" + detail::number(fit.slope) + " ± " +
+             detail::number(fit.slope_error) +
+             ") eps, chi2/dof = " + detail::number(fit.chi2_per_dof) + "\n";
+        elements.push_back("$" + fit_block + " using 1:2 with lines " + colour +
+                           " linewidth 1 notitle");
+        any_fit = true;
+      }
+      elements.push_back("$" + block + " using 1:2:3 with yerrorbars pointtype " +
+                         point_type(series.mode, s) + " pointsize 1.4*point_scale " + colour +
+                         " linewidth 1 title " + detail::quote(series.label));
+    }
+    if (!panel.theory_A.empty()) {
+      detail::Rows theory;
+      for (std::size_t i = 0; i < panel.theory_A.size(); ++i) {
+        theory.push_back({panel.theory_restitution[i], panel.theory_A[i]});
+      }
+      script.data.emplace_back(prefix + "_theory", theory);
+      elements.push_back("$" + prefix +
+                         "_theory using 1:2 with lines linecolor rgb 'black' dashtype (8,5) "
+                         "linewidth 1.2 title 'kinetic theory (b = 0)'");
+    }
+    if (any_fit) {
+      elements.push_back(
+          "keyentry with lines linecolor rgb '#555555' linewidth 1 title 'least-squares fits'");
+    }
+    const double pad = 0.04 * std::max(eps_max - eps_min, 0.05);
+    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
+    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
+         "]\n";
+    // Leave room above the data for the key.
+    c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
+    c += "  plot ";
+    for (std::size_t k = 0; k < elements.size(); ++k) {
+      c += (k == 0 ? "" : ", \\\n       ") + elements[k];
+    }
+    c += "\n";
+  }
+  return detail::render(script, options);
+}
+
+}  // namespace molchaos::figures
