@@ -156,11 +156,7 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
   cell_xyz_.resize(n);
   id_.resize(n);
   for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  coll_time_.assign(n, k_inf);
-  partner_.assign(n, -1);
-  partner_counter_.assign(n, 0);
-  cross_time_.assign(n, k_inf);
-  cross_axis_.assign(n, 0);
+  ev_.assign(n, EventData{});
   last_collision_time_.assign(n, -k_inf);
   slot_.assign(n, -1);
   std::size_t cells = 1;
@@ -371,14 +367,14 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
     if (events_ >= event_limit) return Outcome::paused;
     now_ = t;
     ++events_;
-    if (cross_time_[i] < coll_time_[i]) {
+    if (ev_[i].cross_time < ev_[i].coll_time) {
       if (neighbour_lists_)
         rebuild_neighbours(i);  // left its shell: new centre, new neighbour list
       else
         cross_cell(i);  // moves i to its next cell, looks at the cells that came into range
     } else {
-      const std::int32_t j = partner_[i];
-      if (part_[j].counter != partner_counter_[i]) {  // partner's velocity changed since: stale
+      const std::int32_t j = ev_[i].partner;
+      if (part_[j].counter != ev_[i].partner_counter) {  // partner's velocity changed since: stale
         predict(i);
         continue;
       }
@@ -593,8 +589,8 @@ void Engine<D>::crossing(std::int32_t i) {
       axis = a;
     }
   }
-  cross_time_[i] = now_ + std::max(best, 0.0);
-  cross_axis_[i] = static_cast<std::int8_t>(axis);
+  ev_[i].cross_time = now_ + std::max(best, 0.0);
+  ev_[i].cross_axis = static_cast<std::int8_t>(axis);
 }
 
 template <int D>
@@ -625,14 +621,14 @@ void Engine<D>::predict(std::int32_t i) {
       for (const std::int32_t j : cell_members(stencil[s]))
         if (j != i) consider(j);
   }
-  coll_time_[i] = best;
-  partner_[i] = partner;
-  partner_counter_[i] = partner >= 0 ? part_[partner].counter : 0;
+  ev_[i].coll_time = best;
+  ev_[i].partner = partner;
+  ev_[i].partner_counter = partner >= 0 ? part_[partner].counter : 0;
   if (neighbour_lists_)
     shell_exit(i);
   else
     crossing(i);
-  calendar_.update(i, std::min(best, cross_time_[i]));
+  calendar_.update(i, std::min(best, ev_[i].cross_time));
 }
 
 // Time at which i (at now_) leaves the sphere of radius shell_ around its list centre.
@@ -647,11 +643,11 @@ void Engine<D>::shell_exit(std::int32_t i) {
     c += d * d;
   }
   if (!(a > 0)) {
-    cross_time_[i] = k_inf;
+    ev_[i].cross_time = k_inf;
     return;
   }
   const double dt = (-b + std::sqrt(std::max(b * b - a * c, 0.0))) / a;
-  cross_time_[i] = now_ + std::max(dt, 0.0);
+  ev_[i].cross_time = now_ + std::max(dt, 0.0);
 }
 
 template <int D>
@@ -745,25 +741,25 @@ template <int D>
 void Engine<D>::predict_slab(std::int32_t i, int axis, int direction) {
   int slab[stencil_size<D>()];
   const int count = slab_cells<D>(cell_xyz_[i].data(), cells_per_side_, axis, direction, slab);
-  double best = coll_time_[i];
+  double best = ev_[i].coll_time;
   for (int s = 0; s < count; ++s)
     for (const std::int32_t j : cell_members(slab[s])) {
       const double t = pair_time(i, j);
       if (t < best) {
         best = t;
-        partner_[i] = j;
-        partner_counter_[i] = part_[j].counter;
+        ev_[i].partner = j;
+        ev_[i].partner_counter = part_[j].counter;
       }
     }
-  coll_time_[i] = best;
+  ev_[i].coll_time = best;
   crossing(i);
-  calendar_.update(i, std::min(best, cross_time_[i]));
+  calendar_.update(i, std::min(best, ev_[i].cross_time));
 }
 
 template <int D>
 void Engine<D>::cross_cell(std::int32_t i) {
   advance_particle(i);
-  const int axis = cross_axis_[i];
+  const int axis = ev_[i].cross_axis;
   const int direction = part_[i].v[axis] > 0 ? 1 : -1;
   int x[D];
   for (int a = 0; a < D; ++a) x[a] = cell_xyz_[i][a];
@@ -1074,8 +1070,7 @@ Snapshot Engine<D>::snapshot() const {
 template <int D>
 std::size_t Engine<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(part_) + bytes(id_) + bytes(coll_time_) + bytes(partner_) + bytes(partner_counter_) +
-         bytes(cross_time_) + bytes(cross_axis_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
          bytes(slot_) + bytes(slots_) + bytes(count_) + bytes(center_) + bytes(nl_) +
          bytes(nl_count_) + calendar_.memory_bytes();
 }

@@ -151,12 +151,17 @@ class Engine {
   };
   std::vector<Particle> part_;
   std::vector<std::int32_t> id_;  // the particle's original index (snapshots keep that order)
-  // Per-particle event data (structure of arrays).
-  std::vector<double> coll_time_;  // predicted collision (tau) or +inf
-  std::vector<std::int32_t> partner_;
-  std::vector<std::uint32_t> partner_counter_;
-  std::vector<double> cross_time_;  // next cell crossing (tau)
-  std::vector<std::int8_t> cross_axis_;
+  // Per-particle pending event, one 32-byte record: the earliest predicted collision (time,
+  // partner, partner's counter at prediction) and the next bookkeeping event (cell crossing along
+  // cross_axis, or shell exit).
+  struct EventData {
+    double coll_time = std::numeric_limits<double>::infinity();
+    double cross_time = std::numeric_limits<double>::infinity();
+    std::int32_t partner = -1;
+    std::uint32_t partner_counter = 0;
+    std::int32_t cross_axis = 0;
+  };
+  std::vector<EventData> ev_;
   std::vector<double> last_collision_time_;  // tau of the particle's last collision
   // Cell lists as fixed-capacity slot arrays: cell c's members are slots_[c * capacity_ + k],
   // k < count_[c], so a stencil scan reads contiguous indices and independent partner records.
