@@ -1,14 +1,17 @@
 // Unit tests of molchaos::sim: the collision rule, the shuffles, the random numbers, parameter
 // validation, the sample grid and the CSV format.
 #define BOOST_TEST_MODULE sim_unit
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <vector>
 
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/csv.hpp"
+#include "molchaos/sim/event_calendar.hpp"
 #include "molchaos/sim/rng.hpp"
 #include "molchaos/sim/run.hpp"
 
@@ -232,4 +235,39 @@ BOOST_AUTO_TEST_CASE(csv_reader_rejects_truncated_and_corrupt_files) {
   std::string bad = text;
   bad.replace(bad.find("0.93"), 4, "0.9x");
   BOOST_TEST(rejects(bad));
+}
+
+BOOST_AUTO_TEST_CASE(event_calendar_always_yields_the_earliest_event) {
+  // Random schedule/reschedule/pop sequences against a brute-force minimum, including events far
+  // beyond the bucket window, infinite times and ties.
+  Rng rng(5);
+  const std::int32_t n = 300;
+  EventCalendar calendar;
+  calendar.reset(n, 0.0, 0.01, 4 * n);
+  std::vector<double> times(n);
+  double now = 0;
+  for (std::int32_t i = 0; i < n; ++i) {
+    times[i] = now + (i % 17 == 0 ? 1e6 : rng.uniform());
+    calendar.update(i, times[i]);
+  }
+  for (int step = 0; step < 100000; ++step) {
+    const auto [t, i] = calendar.top();
+    double expected = std::numeric_limits<double>::infinity();
+    for (double x : times) expected = std::min(expected, x);
+    BOOST_REQUIRE(t == expected);
+    BOOST_REQUIRE(times[i] == t);
+    now = t;
+    // The popped particle gets a new event; sometimes another particle is rescheduled too.
+    const double u = rng.uniform();
+    times[i] = u < 0.01   ? std::numeric_limits<double>::infinity()
+               : u < 0.05 ? now + 1e3 * rng.uniform()
+               : u < 0.10 ? now
+                          : now + rng.uniform();
+    calendar.update(i, times[i]);
+    if (rng.uniform() < 0.3) {
+      const auto k = static_cast<std::int32_t>(rng.below(n));
+      times[k] = now + 0.5 * rng.uniform();
+      calendar.update(k, times[k]);
+    }
+  }
 }
