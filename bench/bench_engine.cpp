@@ -101,6 +101,27 @@ BENCHMARK(bm_disks)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
+// The paper's run (Fig. 3): d = 2, N = 5000, n = 0.05, restitution 0.93, shuffle range(0)
+// (0 none, 1 paper, 2 flux); 2e5 collisions (40 per particle, well before clustering).
+void bm_paper_case(benchmark::State& state) {
+  Parameters p;
+  p.dimension = 2;
+  p.particles = 5000;
+  p.density = 0.05;
+  p.restitution = 0.93;
+  p.randomize = static_cast<Randomization>(state.range(0));
+  p.relax_collisions_per_particle = 1;
+  time_collisions<2>(state, p, 200000);
+}
+BENCHMARK(bm_paper_case)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgNames({"shuffle"})
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
 // d = 3 elastic spheres, N = 1e5, packing fraction range(0) / 100.
 void bm_spheres(benchmark::State& state) {
   Parameters p;
