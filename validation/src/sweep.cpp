@@ -88,7 +88,27 @@ sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& o) {
   return r;
 }
 
+void remove_stale_temporaries(const std::string& cache_directory) {
+  if (cache_directory.empty() || !std::filesystem::is_directory(cache_directory)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(cache_directory)) {
+    // "<key>.csv.tmp.<pid>": left behind only if the writing process was killed mid-write.
+    const std::string name = entry.path().filename().string();
+    const auto pos = name.find(".tmp.");
+    if (pos == std::string::npos) continue;
+    const long pid = std::strtol(name.c_str() + pos + 5, nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) == 0) continue;  // writer still alive
+    std::error_code ec;
+    std::filesystem::remove(entry.path(), ec);
+  }
+}
+
 std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs, const SweepOptions& o) {
+  remove_stale_temporaries(o.cache_directory);
+  return o.runner ? o.runner(runs, o) : run_sweep_locally(runs, o);
+}
+
+std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& runs,
+                                          const SweepOptions& o) {
   std::vector<RunOutcome> out(runs.size());
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
