@@ -201,3 +201,40 @@ BOOST_AUTO_TEST_CASE(collapse_stops_the_run_with_a_reason) {
   const RunResult with_tc = run(p);
   BOOST_TEST(with_tc.stop_reason == "t_end");
 }
+
+BOOST_AUTO_TEST_CASE(simultaneous_and_grazing_collisions) {
+  // Four disks in a box of side 10. Disks 1 and 2 hit disk 0 (at rest) from both sides at the
+  // same instant t = 1; elastic hard disks in a row end with the outer ones flying apart and the
+  // middle one at rest. Disk 3 grazes disk 0's final position region with impact parameter
+  // exactly sigma, far later, and must pass undeflected.
+  Parameters p;
+  p.particles = 4;
+  p.density = 0.04;  // box side 10
+  p.relax_collisions_per_particle = 0;
+  Engine<2> engine(p);
+  BOOST_REQUIRE(engine.box() == 10.0);
+  const std::vector<double> r = {5, 5, 3, 5, 7, 5, 1, 2};
+  const std::vector<double> v = {0, 0, 1, 0, -1, 0, 0.5, 0};
+  engine.set_state(r, v);
+  engine.set_debug_overlap_check(1);
+  const double energy = engine.kinetic_energy();
+  BOOST_TEST((engine.advance_to(1.5) == Engine<2>::Status::reached));
+  BOOST_TEST(engine.collisions() == 3u);  // 1-0, 0-2, 0-1 at t = 1 (zero time apart)
+  const Snapshot s = engine.snapshot();
+  BOOST_TEST(s.velocities[0] == 0.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s.velocities[2] == -1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(s.velocities[4] == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(engine.kinetic_energy() == energy, boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(engine.min_pair_distance() >= 1 - 1e-10);
+
+  // Grazing: disk 1 moves along y = 6 past disk 0 at (5, 5): contact at zero normal speed.
+  const std::vector<double> r2 = {5, 5, 2, 6, 8, 1, 1, 9};
+  const std::vector<double> v2 = {0, 0, 1, 0, 0, 0, 0, 0};
+  engine.set_state(r2, v2);
+  BOOST_TEST((engine.advance_to(5.0) == Engine<2>::Status::reached));
+  const Snapshot g = engine.snapshot();
+  BOOST_TEST(g.velocities[2] == 1.0);
+  BOOST_TEST(g.velocities[3] == 0.0);
+  BOOST_TEST(g.velocities[0] == 0.0);
+  BOOST_TEST(engine.min_pair_distance() >= 1 - 1e-10);
+}
