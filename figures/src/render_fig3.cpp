@@ -67,9 +67,11 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
   std::vector<CurveRows> curves;
   double inset_low = std::numeric_limits<double>::infinity();
   double inset_high = -std::numeric_limits<double>::infinity();
+  double lowest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < data.curves.size(); ++i) {
     curves.push_back(curve_rows(data.curves[i], "Fig3Data.curves[" + std::to_string(i) + "]"));
     for (const auto& row : curves.back().rows) {
+      if (row[1] > 0.0) lowest = std::min(lowest, row[1]);
       if (row[0] >= data.inset_log_t_min && row[0] <= data.inset_log_t_max) {
         inset_low = std::min(inset_low, row[2]);
         inset_high = std::max(inset_high, row[3]);
@@ -132,19 +134,22 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
   c += "  set ylabel 'T/T_0'\n";
   c += "  set logscale y\n  set format y '10^{%L}'\n";
   c += "  set mxtics 2\n  set tics scale 1.5,0.75\n";
-  // Haff's law falls from the upper left to the lower right: the key goes to the empty lower
-  // left, the inset to the empty upper right.
-  c += "  set key bottom left Left reverse spacing 1.25 samplen 2.5 box opaque\n";
+  // Plotted against ln t ≥ 0, Haff's law stays near T0 on the left and falls to the lower right:
+  // the inset goes to the empty lower left.
+  // The key goes to the lower right, below the end of the curves: the y range reaches one and a
+  // half decades below the lowest temperature to make room for it.
+  c += "  set key bottom right Left reverse spacing 1.2 samplen 2.5 box opaque font font_small\n";
+  if (std::isfinite(lowest))
+    c += "  set yrange [" + detail::number(std::pow(10.0, std::floor(std::log10(lowest)) - 1.5)) +
+         ":1.3]\n";
   c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
   if (data.clustering_onset) {
     const std::string x = detail::number(std::log(*data.clustering_onset));
-    // The marker stops below the inset (whose tic labels reach about 0.1 of the canvas below
-    // its frame), so that it never runs through it.
-    c += "  set arrow from " + x + ", graph 0 to " + x + ", " +
-         (has_inset ? std::string("screen 0.50") : std::string("graph 1")) +
-         " nohead dashtype (3,4) linecolor rgb '#555555' linewidth 1.2 front\n";
+    // Drawn behind the (opaque) key; the inset sits in the lower left, away from the onset.
+    c += "  set arrow from " + x + ", graph 0 to " + x +
+         ", graph 1 nohead dashtype (3,4) linecolor rgb '#555555' linewidth 1.2 back\n";
     c += "  set label 'clustering onset' at " + x +
-         ", graph 0.03 rotate by 90 left offset character -0.7, 0 font font_small "
+         ", graph 0.42 rotate by 90 left offset character -0.7, 0 font font_small "
          "textcolor rgb '#555555' front\n";
   }
   if (has_inset) {
@@ -161,10 +166,9 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
          " <= ln t <= " + detail::number(data.inset_log_t_max) +
          ", y range fitted to the data there.\n";
     c += "  unset object 1; unset arrow; unset label; unset title; unset key; unset grid\n";
-    // Its y tic labels go on the right, away from the main curves.
-    c += "  set lmargin at screen 0.60; set rmargin at screen 0.85\n";
-    c += "  set bmargin at screen " + std::string(data.title.empty() ? "0.62" : "0.58") +
-         "; set tmargin at screen " + std::string(data.title.empty() ? "0.93" : "0.88") + "\n";
+    // Lower left, where the main plot is empty (T is still ≈ T0 there); y tic labels on the right.
+    c += "  set lmargin at screen 0.21; set rmargin at screen 0.47\n";
+    c += "  set bmargin at screen 0.40; set tmargin at screen 0.68\n";
     c += "  unset logscale y\n  unset ytics\n  set y2tics mirror font font_small\n";
     c += "  set format y2 '%.3g'\n  set format x '%.2f'\n";
     c += "  set xtics 0.25 font font_small\n  set mxtics 5\n  set my2tics 2\n";

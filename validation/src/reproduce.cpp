@@ -57,7 +57,7 @@ TemperatureCurve mean_curve(const std::vector<const sim::RunResult*>& runs,
   for (const auto* r : runs) len = std::min(len, r->samples.size());
   for (std::size_t i = 0; i < len; ++i) {
     const double t = runs.front()->samples[i].t;
-    if (t <= 0) continue;
+    if (t < 1.0) continue;  // Fig. 3 starts at ln t = 0, as the paper's
     std::vector<double> T;
     for (const auto* r : runs) T.push_back(r->samples[i].temperature);
     const Measurement m = mean_and_standard_error(T);
