@@ -77,7 +77,7 @@ RenderedFigure render_b(const validation::BData& data, const RenderOptions& opti
     c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
     c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
          "]\n";
-    c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
+    c += "  set autoscale y\n  set offsets 0, 0, graph 0.5, graph 0.05\n";
     c += plot + "\n";
   }
   return detail::render(script, options);

@@ -365,10 +365,10 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
     // b(ε) three ways.
     BPanel bp;
     bp.density = n;
-    BSeries b_paper{"from A: paper's formula (63/40, omega0 with 1/3)", {}, {}};
-    BSeries b_suite{"from A: suite (exact coefficients, omega0 with 1/2)", {}, {}};
-    BSeries b_contact{"direct: contact statistics, original gas", {}, {}};
-    BSeries b_control{"direct: contact statistics, flux-shuffled gas (control)", {}, {}};
+    BSeries b_paper{"from A, paper's 63/40 and ω0", {}, {}};
+    BSeries b_suite{"from A, suite's coefficients and ω0", {}, {}};
+    BSeries b_contact{"contacts, original gas", {}, {}};
+    BSeries b_control{"contacts, flux gas (control)", {}, {}};
     const double g2 = theory::contact_value_g2_at_density(d, n);
     const double omega0_paper = g2 * n * std::sqrt(std::numbers::pi) / 3.0;
     for (double e : cfg.restitutions) {
@@ -470,16 +470,14 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
 
   // --- snapshot after the clustering onset -----------------------------------------------------
   {
-    sim::Parameters p = p3.at(0);  // original gas, first seed
-    const double t_snap = R.fig3.clustering_onset
-                              ? std::min(cfg.fig3_t_end, 2.0 * *R.fig3.clustering_onset)
-                              : cfg.fig3_t_end;
+    sim::Parameters p = p3.at(0);          // original gas, first seed
+    const double t_snap = cfg.fig3_t_end;  // well after the detected onset
     p.snapshot_times = {t_snap};
     p.t_end = t_snap;
     p.contact_statistics = false;
     const sim::RunResult r = sim::run(p);
     if (!r.snapshots.empty()) {
-      R.snapshot = make_snapshot(r.snapshots.back(), 16);
+      R.snapshot = make_snapshot(r.snapshots.back(), 10);
       R.snapshot.title = fmt::format("original gas at t = {:.0f} (ln t = {:.2f}), eps = {}, n = {}",
                                      R.snapshot.time, std::log(R.snapshot.time),
                                      cfg.fig3_restitution, cfg.fig3_density);
