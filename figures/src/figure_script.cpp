@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -266,6 +267,22 @@ void require_same_size(const std::string& field, std::size_t size, const std::st
 
 void require_non_empty(const std::string& field, std::size_t size) {
   if (size == 0) throw std::invalid_argument(field + " is empty");
+}
+
+void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
+                          const std::string& ylabel, const std::string& key_position) {
+  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
+  script.canvas.pdf_height = 3.4;
+  std::string& c = script.commands;
+  c += "  set multiplot layout 1," + std::to_string(panels);
+  if (!title.empty()) c += " title " + quote(title);
+  c += "\n  set xlabel 'ε'\n  set ylabel " + quote(ylabel) + "\n";
+  c += "  set key " + key_position + " spacing 1.15 samplen 2 box opaque font font_small\n";
+  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
+  c += "  set mxtics 2\n  set mytics 2\n  set tics scale 1.5,0.75\n  set format x '%.2f'\n";
+  c += "  set bars small\n";
 }
 
 }  // namespace molchaos::figures::detail

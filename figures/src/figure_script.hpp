@@ -47,4 +47,8 @@ void require_same_size(const std::string& field, std::size_t size, const std::st
                        std::size_t other_size);
 void require_non_empty(const std::string& field, std::size_t size);
 
+/// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
+void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
+                          const std::string& ylabel, const std::string& key_position);
+
 }  // namespace molchaos::figures::detail

@@ -21,19 +21,8 @@ RenderedFigure render_b(const validation::BData& data, const RenderOptions& opti
       "density. Data blocks pP_sS: eps, b, standard error of b, eps as drawn (series are shifted\n"
       "sideways by a few thousandths so that their error bars do not hide one another).";
   const auto panels = data.panels.size();
-  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
-  script.canvas.png_height = 760;
-  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
-  script.canvas.pdf_height = 3.4;
-
+  detail::begin_epsilon_panels(script, panels, data.title, "b", "top right");
   std::string& c = script.commands;
-  c += "  set multiplot layout 1," + std::to_string(panels);
-  if (!data.title.empty()) c += " title " + detail::quote(data.title);
-  c += "\n  set xlabel 'ε'\n  set ylabel 'b'\n";
-  c += "  set key top right spacing 1.15 samplen 2 box opaque font font_small\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
-  c += "  set mxtics 2\n  set mytics 2\n  set tics scale 1.5,0.75\n  set format x '%.2f'\n";
-  c += "  set bars small\n";
 
   constexpr std::array<const char*, 5> k_point_types{"7", "5", "9", "4", "13"};
   for (std::size_t p = 0; p < panels; ++p) {

@@ -42,19 +42,8 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
       "per density. Data blocks pP_sS: eps, A, standard error of A; pP_fitS: the fitted line at\n"
       "the ends of its eps range; pP_theory: kinetic theory A(eps) with b = 0.";
   const auto panels = data.panels.size();
-  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
-  script.canvas.png_height = 760;
-  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
-  script.canvas.pdf_height = 3.4;
-
+  detail::begin_epsilon_panels(script, panels, data.title, "A  [σ√(m/T_0)]", "top left");
   std::string& c = script.commands;
-  c += "  set multiplot layout 1," + std::to_string(panels);
-  if (!data.title.empty()) c += " title " + detail::quote(data.title);
-  c += "\n  set xlabel 'ε'\n  set ylabel 'A  [σ√(m/T_0)]'\n";
-  c += "  set key top left spacing 1.15 samplen 2 box opaque font font_small\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
-  c += "  set mxtics 2\n  set mytics 2\n  set tics scale 1.5,0.75\n  set format x '%.2f'\n";
-  c += "  set bars small\n";
 
   for (std::size_t p = 0; p < panels; ++p) {
     const auto& panel = data.panels[p];
