@@ -23,6 +23,7 @@
 #include "molchaos/mpi/session.hpp"
 #include "molchaos/mpi/wire.hpp"
 #include "molchaos/sim/csv.hpp"
+#include "molchaos/validation/sweep_reporter.hpp"
 
 namespace molchaos::mpi {
 namespace {
@@ -76,62 +77,6 @@ std::string cache_path(const sim::Parameters& p, const SweepOptions& o) {
       .string();
 }
 
-// The same stderr lines as the local runner (validation/src/sweep.cpp): failures with their
-// parameters, and "i/total runs done (k from cache), elapsed, ~left".
-class Reporter {
- public:
-  Reporter(const SweepOptions& o, std::size_t total, int ranks)
-      : o_(o),
-        total_(total),
-        ranks_(ranks),
-        every_(std::max<std::size_t>(1, total / 20)),
-        tty_(isatty(STDERR_FILENO) != 0) {}
-
-  void failed(std::size_t i, const sim::Parameters& p, const std::string& what, RunOutcome& out) {
-    out.ok = false;
-    out.error = fmt::format("run {} (d={}, N={}, n={}, eps={}, randomize={}, seed={}) failed: {}",
-                            i, p.dimension, p.particles, p.density, p.restitution,
-                            sim::to_string(p.randomize), p.seed, what);
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::fprintf(stderr, "%s[%s] %s\n", tty_ ? "\n" : "", o_.label.c_str(), out.error.c_str());
-  }
-
-  void note(const std::string& line) {
-    if (!o_.progress) return;
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::fprintf(stderr, "[%s] %s\n", o_.label.c_str(), line.c_str());
-    std::fflush(stderr);
-  }
-
-  void done(bool from_cache) {
-    if (from_cache) ++cached_;
-    const std::size_t finished = ++done_;
-    if (!o_.progress) return;
-    if (!tty_ && finished % every_ != 0 && finished != total_) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    const std::size_t computed = finished - cached_.load();
-    const double per_run = computed > 0 ? elapsed / static_cast<double>(computed) : 0.0;
-    const double eta = per_run * static_cast<double>(total_ - finished) / ranks_;
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::fprintf(stderr,
-                 "%s[%s] %zu/%zu runs done (%zu from cache), elapsed %.0f s, ~%.0f s left%s",
-                 tty_ ? "\r" : "", o_.label.c_str(), finished, total_, cached_.load(), elapsed, eta,
-                 tty_ ? (finished == total_ ? "\n" : "") : "\n");
-    std::fflush(stderr);
-  }
-
- private:
-  const SweepOptions& o_;
-  std::size_t total_;
-  int ranks_;
-  std::size_t every_;
-  bool tty_;
-  std::atomic<std::size_t> done_{0}, cached_{0};
-  std::mutex mutex_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
-
 // Runs not yet started. Rank 0's compute thread takes the runs only it may do first (those with
 // snapshots, which the CSV text does not carry), then competes with the workers for the rest.
 class WorkQueue {
@@ -170,7 +115,7 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
   if (stats) stats->runs_per_rank.assign(static_cast<std::size_t>(ranks), 0);
   std::vector<RunOutcome> out(total);
   if (total == 0) return out;
-  Reporter reporter(o, total, ranks);
+  validation::SweepReporter reporter(o, total, ranks);
 
   // Resume: rank 0 alone reads the cache, and only uncached runs travel.
   WorkQueue queue;

@@ -16,6 +16,7 @@
 
 #include "molchaos/sim/csv.hpp"
 #include "molchaos/sim/run.hpp"
+#include "molchaos/validation/sweep_reporter.hpp"
 
 namespace molchaos::validation {
 
@@ -112,53 +113,20 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
   std::vector<RunOutcome> out(runs.size());
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
-  std::atomic<std::size_t> done{0}, cached{0};
-  std::mutex print_mutex;
-  const auto start = std::chrono::steady_clock::now();
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  const std::size_t total = runs.size();
-  const std::size_t every = std::max<std::size_t>(1, total / 20);
-
-  auto report = [&](std::size_t finished) {
-    if (!o.progress) return;
-    if (!tty && finished % every != 0 && finished != total) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::size_t computed = finished - cached.load();
-    const std::size_t left = total - finished;
-    const double per_run = computed > 0 ? elapsed / static_cast<double>(computed) : 0.0;
-    const double eta = per_run * static_cast<double>(left) / threads;
-    std::lock_guard<std::mutex> lock(print_mutex);
-    std::fprintf(stderr,
-                 "%s[%s] %zu/%zu runs done (%zu from cache), elapsed %.0f s, ~%.0f s left%s",
-                 tty ? "\r" : "", o.label.c_str(), finished, total, cached.load(), elapsed, eta,
-                 tty ? (finished == total ? "\n" : "") : "\n");
-    std::fflush(stderr);
-  };
-
+  SweepReporter reporter(o, runs.size(), threads);
   auto worker = [&] {
     for (;;) {
       const std::size_t i = next.fetch_add(1);
-      if (i >= total) return;
+      if (i >= runs.size()) return;
       RunOutcome& outcome = out[i];
       try {
-        if (load_cached(runs[i], o, outcome.result)) {
-          outcome.from_cache = true;
-          ++cached;
-        } else {
-          outcome.result = run_and_cache(runs[i], o);
-        }
+        outcome.from_cache = load_cached(runs[i], o, outcome.result);
+        if (!outcome.from_cache) outcome.result = run_and_cache(runs[i], o);
         outcome.ok = true;
       } catch (const std::exception& e) {
-        const auto& p = runs[i];
-        outcome.error = fmt::format(
-            "run {} (d={}, N={}, n={}, eps={}, randomize={}, seed={}) failed: {}", i, p.dimension,
-            p.particles, p.density, p.restitution, sim::to_string(p.randomize), p.seed, e.what());
-        std::lock_guard<std::mutex> lock(print_mutex);
-        std::fprintf(stderr, "%s[%s] %s\n", tty ? "\n" : "", o.label.c_str(),
-                     outcome.error.c_str());
+        reporter.failed(i, runs[i], e.what(), outcome);
       }
-      report(++done);
+      reporter.done(outcome.from_cache);
     }
   };
   std::vector<std::thread> pool;
