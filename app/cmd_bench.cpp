@@ -54,13 +54,7 @@ void bench_theory(const BenchOptions& o) {
       const double start = cpu_seconds();
       const auto table = theory::expand_collision_moment(d, 2, 0.5, 3.0, q);
       const double seconds = cpu_seconds() - start;
-      const double mu_hat = theory::reference::mu2_maxwell(d);
-      double reached = std::abs(table.base.value / 0.75 - mu_hat) / mu_hat;
-      double estimate = table.base.relative_error();
-      for (const auto& [name, exact] : theory::reference::mu2_coefficients()) {
-        reached = std::max(reached, std::abs(table.term(name).coefficient.value - exact));
-        estimate = std::max(estimate, table.term(name).coefficient.error);
-      }
+      const auto [reached, estimate] = theory::reference::table_error(table);
       data.points.push_back({q.relative_tolerance, seconds, reached, estimate});
       std::cout << fmt::format("{:>4} {:>10.0e} {:>10.3f} {:>14.2e} {:>14.2e} {:>12}\n", d,
                                q.relative_tolerance, seconds, reached, estimate,

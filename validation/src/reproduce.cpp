@@ -81,23 +81,6 @@ TemperatureCurve haff_curve(double tau0, const std::vector<double>& times,
   return c;
 }
 
-// Paired (same seed) ratio A_reference/A of two modes at one point: mean ± SE.
-Measurement paired_ratio(const PointSummary& reference, const PointSummary& other) {
-  std::map<std::uint64_t, double> ref(reference.A_by_seed.begin(), reference.A_by_seed.end());
-  std::vector<double> ratios;
-  for (const auto& [seed, A] : other.A_by_seed)
-    if (auto it = ref.find(seed); it != ref.end()) ratios.push_back(it->second / A);
-  return mean_and_standard_error(ratios);
-}
-
-Measurement paired_difference(const PointSummary& a, const PointSummary& b) {
-  std::map<std::uint64_t, double> ref(b.A_by_seed.begin(), b.A_by_seed.end());
-  std::vector<double> d;
-  for (const auto& [seed, A] : a.A_by_seed)
-    if (auto it = ref.find(seed); it != ref.end()) d.push_back(A - it->second);
-  return mean_and_standard_error(d);
-}
-
 SnapshotData make_snapshot(const sim::Snapshot& snap, int grid) {
   SnapshotData s;
   s.time = snap.t;
@@ -379,7 +362,8 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
     for (double e : cfg.restitutions) {
       const auto& orig = find_point(n, e, "none");
       const auto& rand = find_point(n, e, "flux");
-      const Measurement diff = paired_difference(orig.summary, rand.summary);
+      const Measurement diff =
+          paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
       if (orig.summary.runs > 0 && rand.summary.runs > 0) {
         b_paper.restitution.push_back(e);
         b_paper.b.push_back(
@@ -391,7 +375,8 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
             1.0 + c.term("a2").coefficient.value * a2 + c.term("a2^2").coefficient.value * a2 * a2;
         const double cb = c.term("b").coefficient.value + c.term("a2*b").coefficient.value * a2 +
                           c.term("a2^2*b").coefficient.value * a2 * a2;
-        const Measurement ratio = paired_ratio(rand.summary, orig.summary);
+        const Measurement ratio =
+            paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return r / o; });
         b_suite.restitution.push_back(e);
         b_suite.b.push_back({R0 * (ratio.value - 1.0) / cb, R0 * ratio.error / std::abs(cb)});
       }

@@ -3,11 +3,14 @@
 // (tests, work–precision benchmark); the suite's results always come from the quadrature.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "molchaos/theory/collision_moments.hpp"
 
 namespace molchaos::theory::reference {
 
@@ -24,6 +27,25 @@ inline std::vector<std::pair<std::string, double>> mu2_coefficients() {
           {"b", -1.5},
           {"a2*b", -21.0 / 32.0},
           {"a2^2*b", 93.0 / 2048.0}};
+}
+
+/// How far a μ2 table (printed dyad) is from the closed forms: the largest deviation of
+/// μ2(0,0)/(1 − ε²) (relative) and of the five coefficients, and the largest error estimate.
+struct TableError {
+  double reached = 0.0;
+  double estimated = 0.0;
+};
+
+inline TableError table_error(const ExpansionTable& table) {
+  const double mu_hat = mu2_maxwell(table.dimension);
+  const double scale = 1.0 - table.restitution * table.restitution;
+  TableError e{std::abs(table.base.value / scale - mu_hat) / mu_hat, table.base.relative_error()};
+  for (const auto& [name, exact] : mu2_coefficients()) {
+    const auto& c = table.term(name).coefficient;
+    e.reached = std::max(e.reached, std::abs(c.value - exact));
+    e.estimated = std::max(e.estimated, c.error);
+  }
+  return e;
 }
 
 }  // namespace molchaos::theory::reference

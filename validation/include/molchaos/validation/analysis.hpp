@@ -52,6 +52,17 @@ struct PointSummary {
   std::vector<std::string> messages;
 };
 
+/// Mean ± standard error of f(A_a, A_b) over the seeds both points have (common random numbers:
+/// runs with the same seed start from the same relaxed state). Iterates a's runs in order.
+template <class F>
+Measurement paired_by_seed(const PointSummary& a, const PointSummary& b, F f) {
+  std::vector<double> values;
+  for (const auto& [seed, A] : a.A_by_seed)
+    for (const auto& [seed_b, A_b] : b.A_by_seed)
+      if (seed_b == seed) values.push_back(f(A, A_b));
+  return mean_and_standard_error(values);
+}
+
 PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
                              const WindowRule& rule);
 
