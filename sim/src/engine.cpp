@@ -23,6 +23,10 @@ constexpr double k_rebase_time = 1000.0;
 // previous collision of one of its particles.
 constexpr std::uint64_t k_micro_limit = 100000;
 constexpr double k_micro_fraction = 1e-10;
+// Dead-lock guard: this many consecutive events at one and the same time without any collision
+// can only be a numerical dead-lock (a cell crossing or a rejected contact re-predicted at now):
+// the run stops with a message instead of looping for ever.
+constexpr std::uint64_t k_stall_limit = 10'000'000;
 // Mean number of particles per cell aimed at when choosing the cell width (cells >= sigma): in
 // dilute disks wider cells mean fewer cell crossings per collision but more pairs per prediction
 // (instruction counts at n = 0.05: best near 0.5 per cell); in d = 3 the 27-cell stencil makes the
@@ -293,6 +297,7 @@ void Engine<D>::set_state(const std::vector<double>& positions,
   std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
   collisions_ = events_ = 0;
   micro_run_ = 0;
+  stalled_events_ = 0;
   stop_ = false;
   stop_reason_.clear();
   build_cells();
@@ -349,6 +354,7 @@ void Engine<D>::relax(double collisions_per_particle) {
   std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
   collisions_ = events_ = 0;
   micro_run_ = 0;
+  stalled_events_ = 0;
   contacts_ = {};
   rebuild_events();
 }
@@ -365,6 +371,14 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
     if (events_ >= event_limit) return Outcome::paused;
+    if (t != now_)
+      stalled_events_ = 0;
+    else if (++stalled_events_ >= k_stall_limit) {
+      request_stop("stalled: " + std::to_string(k_stall_limit) +
+                   " events without a collision at the same time t = " + std::to_string(time()) +
+                   " (a numerical dead-lock in the engine; please report it with the parameters)");
+      return Outcome::stopped;
+    }
     now_ = t;
     ++events_;
     if (ev_[i].cross_time < ev_[i].coll_time) {
@@ -378,7 +392,9 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
         predict(i);
         continue;
       }
+      const std::uint64_t before = collisions_;
       collide(i, j, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
+      if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
       if (sum_u2_ < rescale_below || now_ > k_rebase_time) return Outcome::resync;
     }
@@ -436,24 +452,28 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) 
   advance_particle(j);
   double* vi = part_[i].v;
   double* vj = part_[j].v;
-  double e[D], dist2 = 0, gn = 0;
+  // b = dr.dv with exactly the arithmetic of pair_time() (j is at now_ here, so its position
+  // term is exact): the approach test below and the prediction that scheduled this event then
+  // agree bit for bit. Were gn computed as dv.e instead, rounding could make a pair with a
+  // vanishing normal velocity "approaching" for pair_time() (event at now_) and "separating" here
+  // (nothing done), an endless loop at a frozen time, as happened near inelastic collapse.
+  double e[D], dist2 = 0, b = 0;
   for (int a = 0; a < D; ++a) {
     double d = part_[i].r[a] - part_[j].r[a];
     if (d > half_box_) d -= box_;
     if (d < -half_box_) d += box_;
     e[a] = d;
+    b += d * (vi[a] - vj[a]);
     dist2 += d * d;
   }
-  const double inv_dist = 1.0 / std::sqrt(dist2);
-  for (int a = 0; a < D; ++a) {
-    e[a] *= inv_dist;
-    gn += (vi[a] - vj[a]) * e[a];
-  }
-  if (!(gn < 0)) {  // not approaching after all (rounding at a grazing contact): no collision
+  if (!(b < 0)) {  // not approaching after all: no collision, and pair_time() agrees
     predict(i);
     predict(j);
     return;
   }
+  const double inv_dist = 1.0 / std::sqrt(dist2);
+  for (int a = 0; a < D; ++a) e[a] *= inv_dist;
+  const double gn = b * inv_dist;  // (v_i - v_j).e, < 0, same sign as b
 
   // TC model (Luding & McNamara): elastic if either particle collided less than tc ago.
   const double since = now_ - std::max(last_collision_time_[i], last_collision_time_[j]);

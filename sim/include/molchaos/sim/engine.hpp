@@ -207,6 +207,7 @@ class Engine {
   // units) to a previous collision of one of the pair.
   double micro_interval_ = 0;
   std::uint64_t micro_run_ = 0;
+  std::uint64_t stalled_events_ = 0;  // consecutive events at one time without a collision
 
   // Observers.
   ContactMoments contacts_;
