@@ -105,7 +105,7 @@ void add_simulate_command(CLI::App& app) {
       ->check(integer_in(2, 3))
       ->capture_default_str();
   cmd->add_option("--particles", p.particles, "Number of particles N")
-      ->check(integer_in(4, 100000000))
+      ->check(integer_in(2, 100000000))
       ->capture_default_str();
   cmd->add_option(
          "--density", p.density,

@@ -133,10 +133,14 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
           : std::max(1.0, std::pow(k_cell_occupancy<D> / p.density, 1.0 / static_cast<double>(D)));
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
   if (!neighbour_lists_)
-    cells_per_side_ = std::max(cells_per_side_, std::min(3, static_cast<int>(std::floor(box_))));
-  if (cells_per_side_ < 3)
+    cells_per_side_ = std::max(cells_per_side_, std::min(4, static_cast<int>(std::floor(box_))));
+  // Cells: two particles in neighbouring cells are less than two cell widths apart along each
+  // axis, which must stay below half the box (4 cells or more), or the minimum image may flip
+  // between them while they approach and the collision would be missed. Neighbour lists: the
+  // list cutoff 1 + 2 shell is below half the box (box >= 3 cutoffs).
+  if (cells_per_side_ < (neighbour_lists_ ? 3 : 4))
     throw std::invalid_argument("particles: box side " + std::to_string(box_) +
-                                " is below 3 sigma; use more particles or a higher density");
+                                " is below 4 sigma; use more particles or a higher density");
   cell_width_ = box_ / cells_per_side_;
   {
     int middle[D];
@@ -227,30 +231,72 @@ void Engine<D>::place_particles(Rng& rng) {
     }
     if (ok) return;
   }
-  // Lattice: m^D >= N sites of spacing a > 1; N of them chosen at random.
-  int m = static_cast<int>(std::ceil(std::pow(static_cast<double>(n_), 1.0 / D) - 1e-9));
-  while (std::pow(m, D) < n_) ++m;
-  const double a_spacing = box_ / m;
-  if (a_spacing <= 1.0 + 1e-9)
+  // Lattice with random vacancies and jitter. d = 2: k sites per row, an even number m of rows,
+  // odd rows shifted by half a spacing (a triangular lattice when the box allows it), the (k, m)
+  // with k m >= N that maximises the nearest-site distance; that reaches n = 1.1 (packing 0.86,
+  // above random close packing) for N = 1000. d = 3: a simple cubic lattice (n < ~1).
+  std::int64_t per_row = 0, rows = 0;  // d = 2
+  double nearest = 0;                  // nearest-site distance of the chosen lattice
+  if constexpr (D == 2) {
+    const auto k_max = static_cast<std::int64_t>(std::floor(box_));
+    for (std::int64_t k = 1; k <= k_max; ++k) {
+      std::int64_t m = (n_ + k - 1) / k;
+      m += m % 2;  // even: the shifted rows must match across the periodic boundary
+      const double a = box_ / static_cast<double>(k), h = box_ / static_cast<double>(m);
+      const double d = std::min({a, std::sqrt(0.25 * a * a + h * h), 2.0 * h});
+      if (d > nearest) {
+        nearest = d;
+        per_row = k;
+        rows = m;
+      }
+    }
+  } else {
+    std::int64_t m = static_cast<std::int64_t>(std::ceil(std::cbrt(static_cast<double>(n_)) - 1e-9));
+    while (m * m * m < n_) ++m;
+    per_row = m;
+    nearest = box_ / static_cast<double>(m);
+  }
+  if (nearest <= 1.0 + 1e-9) {
+    // Lattice distances scale with L ~ n^(-1/d): the densest start this lattice gives for this N.
+    const double density = static_cast<double>(n_) / std::pow(box_, D);
+    const double reachable = density * std::pow(nearest, D) / (1.0 + 1e-6);
     throw std::runtime_error(
-        "density " + std::to_string(static_cast<double>(n_) / std::pow(box_, D)) +
-        " is too high to generate a non-overlapping initial state (a simple lattice needs "
-        "n < ~1 sigma^-d)");
-  std::size_t sites = 1;
-  for (int a = 0; a < D; ++a) sites *= static_cast<std::size_t>(m);
-  std::vector<std::int64_t> site(sites);
-  for (std::size_t s = 0; s < sites; ++s) site[s] = static_cast<std::int64_t>(s);
-  const double jitter = 0.99 * (a_spacing - 1.0);
+        "density " + std::to_string(density) +
+        " is too high to generate a non-overlapping initial state for N = " + std::to_string(n_) +
+        (D == 2 ? " disks (a staggered lattice with vacancies reaches n < "
+                : " spheres (a simple cubic lattice with vacancies reaches n < ") +
+        std::to_string(reachable) + " for this N; close packing is " +
+        std::to_string(D == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0)) + ")");
+  }
+  const std::int64_t sites = D == 2 ? per_row * rows : per_row * per_row * per_row;
+  std::vector<std::int64_t> site(static_cast<std::size_t>(sites));
+  for (std::int64_t s = 0; s < sites; ++s) site[static_cast<std::size_t>(s)] = s;
+  // Each coordinate moves by at most jitter/2, so a displacement is at most jitter sqrt(d)/2 and
+  // two sites stay more than 1 apart.
+  const double jitter = 0.99 * (nearest - 1.0) / std::sqrt(static_cast<double>(D));
   for (std::int32_t i = 0; i < n_; ++i) {
     const std::size_t pick =
-        static_cast<std::size_t>(i) +
-        static_cast<std::size_t>(rng.below(static_cast<std::int64_t>(sites) - i));
+        static_cast<std::size_t>(i) + static_cast<std::size_t>(rng.below(sites - i));
     std::swap(site[static_cast<std::size_t>(i)], site[pick]);
-    std::int64_t s = site[static_cast<std::size_t>(i)];
+    const std::int64_t s = site[static_cast<std::size_t>(i)];
+    double r[D];
+    if constexpr (D == 2) {
+      const std::int64_t column = s % per_row, row = s / per_row;
+      const double a = box_ / static_cast<double>(per_row), h = box_ / static_cast<double>(rows);
+      r[0] = (static_cast<double>(column) + (row % 2 == 0 ? 0.25 : 0.75)) * a;
+      r[1] = (static_cast<double>(row) + 0.5) * h;
+    } else {
+      std::int64_t rest = s;
+      for (int a = 0; a < D; ++a) {
+        r[a] = (static_cast<double>(rest % per_row) + 0.5) * nearest;
+        rest /= per_row;
+      }
+    }
     for (int a = 0; a < D; ++a) {
-      const double idx = static_cast<double>(s % m);
-      s /= m;
-      part_[i].r[a] = (idx + 0.5) * a_spacing + (rng.uniform() - 0.5) * jitter;
+      double x = r[a] + (rng.uniform() - 0.5) * jitter;
+      if (x < 0) x += box_;
+      if (x >= box_) x -= box_;
+      part_[i].r[a] = x;
     }
   }
 }

@@ -53,8 +53,12 @@ double box_side(const Parameters& p) {
 void validate(const Parameters& p) {
   if (p.dimension != 2 && p.dimension != 3)
     out_of_range("dimension", std::to_string(p.dimension), "{2, 3}");
-  if (p.particles < 4 || p.particles > 100'000'000)
-    out_of_range("particles", std::to_string(p.particles), "[4, 100000000]");
+  if (p.particles < 2 || p.particles > 100'000'000)
+    out_of_range("particles", std::to_string(p.particles), "[2, 100000000]");
+  if (p.randomize != Randomization::none && p.particles < 4)
+    out_of_range("particles", std::to_string(p.particles),
+                 "[4, 100000000] with randomize = " + std::string(to_string(p.randomize)) +
+                     " (the shuffle needs two particles besides the colliding pair)");
   const double n_max = close_packing_density(p.dimension);
   if (!(p.density > 0 && p.density < n_max))
     out_of_range("density", number(p.density),
@@ -77,11 +81,14 @@ void validate(const Parameters& p) {
   if (!(p.min_temperature >= 0 && p.min_temperature < 1))
     out_of_range("min_temperature", number(p.min_temperature), "[0, 1)");
   const double side = box_side(p);
-  if (side < 3.0)
+  // The cell lists need at least 4 cells of width >= sigma per side: with 3, two particles in
+  // neighbouring cells can be more than half a box apart and the minimum image flips while they
+  // approach, so a collision is missed (found with two disks in a box of side 10).
+  if (side < 4.0)
     throw std::invalid_argument("particles: value " + std::to_string(p.particles) +
                                 " gives a box side " + number(side) +
-                                " below 3 sigma at this density; the allowed range is N >= " +
-                                number(std::ceil(p.density * std::pow(3.0, p.dimension))));
+                                " below 4 sigma at this density; the allowed range is N >= " +
+                                number(std::ceil(p.density * std::pow(4.0, p.dimension))));
 }
 
 }  // namespace molchaos::sim
