@@ -2,8 +2,11 @@
 // range, and the usage-error type that main() turns into exit status 2 with one line on stderr.
 #pragma once
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -69,6 +72,78 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
         return {};
       },
       "integer in " + range);
+}
+
+/// The command-line flag of a field named in a validation message ("t_end: ..." -> "--t-end").
+inline std::string flag_of_field(const std::string& field) {
+  static const std::pair<const char*, const char*> renamed[] = {
+      {"dimension", "--dim"},           {"relax_collisions_per_particle", "--relax"},
+      {"contact_statistics", "--contacts"}, {"densities", "--density"},
+      {"restitutions", "--restitution"},  {"modes", "--randomize"},
+      {"t_end_in_tau0", "--t-end-tau0"},  {"randomize", "--randomize"}};
+  for (const auto& [name, flag] : renamed)
+    if (field == name) return flag;
+  std::string flag = "--" + field;
+  for (char& c : flag)
+    if (c == '_') c = '-';
+  return flag;
+}
+
+/// Rethrows a validation message "<field>: <what>" as the UsageError of the field's flag.
+[[noreturn]] inline void throw_as_usage_error(const std::string& context, const std::string& what) {
+  const auto colon = what.find(": ");
+  if (colon == std::string::npos || what.find(' ') < colon) throw UsageError(context, what);
+  throw UsageError(flag_of_field(what.substr(0, colon)), what.substr(colon + 2));
+}
+
+/// A validator for an unsigned 64-bit integer (seeds, counts): digits only, no sign.
+inline CLI::Validator unsigned_integer() {
+  const std::string range = "[0, 18446744073709551615]";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits) return "'" + text + "' is not a non-negative integer; allowed range " + range;
+        try {
+          (void)std::stoull(text);
+        } catch (...) {
+          return "value " + text + " is outside the allowed range " + range;
+        }
+        return {};
+      },
+      "integer in " + range);
+}
+
+/// Throws UsageError(flag, ...) unless `directory` is, or can be created as, a writable
+/// directory: checked before any work starts, so a run never ends in "cannot write".
+inline void require_writable_directory(const std::string& flag, const std::string& directory) {
+  namespace fs = std::filesystem;
+  fs::path p = directory.empty() ? fs::path(".") : fs::path(directory);
+  std::error_code ec;
+  if (fs::exists(p, ec) && !fs::is_directory(p, ec))
+    throw UsageError(flag, "'" + directory + "' exists and is not a directory");
+  // The nearest existing ancestor must be a directory we may write into.
+  fs::path existing = p;
+  while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
+  if (existing.empty()) existing = ".";
+  if (!fs::is_directory(existing, ec))
+    throw UsageError(flag, "cannot create '" + directory + "': '" + existing.string() +
+                               "' is not a directory");
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    throw UsageError(flag, "cannot write into '" + existing.string() + "' (permission denied)");
+}
+
+/// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (or,
+/// with `create_parent`, can be created) and is writable, and `path` is not a directory.
+inline void require_writable_file(const std::string& flag, const std::string& path,
+                                  bool create_parent) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw UsageError(flag, "empty file name");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw UsageError(flag, "'" + path + "' is a directory");
+  const fs::path parent = fs::path(path).parent_path();
+  if (!create_parent && !parent.empty() && !fs::exists(parent, ec))
+    throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
+  require_writable_directory(flag, parent.string());
 }
 
 }  // namespace molchaos::app

@@ -33,6 +33,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
   auto cfg = o.quick ? validation::ReproduceConfig::quick_look()
                      : validation::ReproduceConfig::paper_scale();
   if (o.seeds > 0) cfg.seeds = o.seeds;
+  require_writable_directory("--out", o.out);
+  if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
   validation::SweepOptions sweep;
   sweep.cache_directory =
       o.cache.empty() ? (std::filesystem::path(o.out) / "cache").string() : o.cache;

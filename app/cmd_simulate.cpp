@@ -25,17 +25,6 @@ struct SimulateOptions {
   bool quiet = false;
 };
 
-// validate() names Parameters fields; the user typed flags.
-std::string flag_of_field(const std::string& field) {
-  if (field == "dimension") return "--dim";
-  if (field == "relax_collisions_per_particle") return "--relax";
-  if (field == "contact_statistics") return "--contacts";
-  std::string flag = "--" + field;
-  for (char& c : flag)
-    if (c == '_') c = '-';
-  return flag;
-}
-
 std::string snapshot_path(const std::string& out, std::size_t index) {
   const auto dot = out.rfind('.');
   const std::string stem = (dot == std::string::npos || dot == 0) ? out : out.substr(0, dot);
@@ -49,13 +38,11 @@ void run_simulate(const SimulateOptions& options) {
     throw UsageError("--randomize",
                      "unknown value '" + options.randomize + "'; allowed: none, paper, flux");
   p.randomize = *mode;
+  require_writable_file("--out", options.out, /*create_parent=*/false);
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
-    const std::string what = e.what();
-    const auto colon = what.find(": ");
-    if (colon == std::string::npos) throw UsageError("simulate", what);
-    throw UsageError(flag_of_field(what.substr(0, colon)), what.substr(colon + 2));
+    throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
   }
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
@@ -118,7 +105,9 @@ void add_simulate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--randomize", options->randomize, "Velocity shuffle: none, paper, flux")
       ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Random seed")->capture_default_str();
+  cmd->add_option("--seed", p.seed, "Random seed")
+      ->check(unsigned_integer())
+      ->capture_default_str();
   cmd->add_option("--t-end", p.t_end, "Physical duration of the cooling run")
       ->check(real_in(0, false, inf, false))
       ->capture_default_str();
@@ -140,6 +129,7 @@ void add_simulate_command(CLI::App& app) {
                   "Times of position/velocity snapshots (written next to --out)")
       ->check(real_in(0, true, inf, false));
   cmd->add_option("--max-collisions", p.max_collisions, "Stop after this many collisions (0 = no)")
+      ->check(unsigned_integer())
       ->capture_default_str();
   cmd->add_option("--min-temperature", p.min_temperature, "Stop when T/T0 falls below (0 = no)")
       ->check(real_in(0, true, 1, false))

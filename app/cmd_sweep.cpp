@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -34,15 +35,28 @@ void run_sweep_command(SweepCliOptions& o) {
     if (!mode) throw UsageError("--randomize", "value '" + m + "' is not one of none, paper, flux");
     o.spec.modes.push_back(*mode);
   }
+  auto reject_repeats = [](const std::string& flag, auto values) {
+    std::sort(values.begin(), values.end());
+    const auto repeated = std::adjacent_find(values.begin(), values.end());
+    if (repeated != values.end())
+      throw UsageError(flag, fmt::format("value {} is listed twice; each point once (use --seeds "
+                                         "for more runs per point)",
+                                         *repeated));
+  };
+  reject_repeats("--density", o.spec.densities);
+  reject_repeats("--restitution", o.spec.restitutions);
+  reject_repeats("--randomize", o.modes);
   for (double n : o.spec.densities)
     if (n >= sim::close_packing_density(o.spec.dimension))
       throw UsageError("--density",
                        fmt::format("value {} is at or above close packing {:.6f} for --dim {}", n,
                                    sim::close_packing_density(o.spec.dimension), o.spec.dimension));
+  if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
+  if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
   try {
     validation::validate(o.spec);
   } catch (const std::invalid_argument& e) {
-    throw UsageError("sweep", e.what());
+    throw_as_usage_error("sweep", e.what());
   }
   validation::SweepOptions so;
   so.cache_directory = o.cache;
@@ -106,6 +120,7 @@ void add_sweep_command(CLI::App& app) {
       ->check(integer_in(1, 100000))
       ->capture_default_str();
   cmd->add_option("--base-seed", o->spec.base_seed, "base seed; run i uses a hash of (base, i)")
+      ->check(unsigned_integer())
       ->capture_default_str();
   cmd->add_option("--t-end-tau0", o->spec.t_end_in_tau0, "run length in kinetic-theory tau0")
       ->check(real_in(0.0, false, 1e6, true))

@@ -62,7 +62,7 @@ BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_naming_the_argument) {
   expect_usage_error("--randomize shuffle", "--randomize");
   expect_usage_error("--t-end -1", "--t-end");
   expect_usage_error("--t-end 10 --snapshot-times 20", "--snapshot-times");
-  expect_usage_error("--particles 8 --density 1", "--particles");  // box below 3 sigma
+  expect_usage_error("--particles 8 --density 1", "--particles");  // box below 4 sigma
   const Outcome o = simulate("--randomize shuffle");
   BOOST_TEST(o.err.find("none, paper, flux") != std::string::npos);
 }
