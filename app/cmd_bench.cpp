@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -32,8 +33,9 @@ struct BenchOptions {
   std::string out = "results/bench";
   bool theory = false;
   bool simulation = false;
-  std::vector<long long> particles{1000, 3000, 10000};
-  std::vector<int> seeds{2, 4, 8};
+  std::vector<long long> particles{1000, 3000, 10000, 30000, 100000};
+  long long work = 400000;  // particle-runs per N
+  int threads = 0;
 };
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -72,41 +74,109 @@ void bench_theory(const BenchOptions& o) {
       (std::filesystem::path(o.out) / "work_precision_theory.csv").string(), csv);
 }
 
+// Seeds for system size n: the same work (particle-runs) for every N, at least k_min_seeds.
+constexpr int k_min_seeds = 4;
+int seeds_for(const BenchOptions& o, long long n) {
+  return static_cast<int>(std::max<long long>(k_min_seeds, (o.work + n - 1) / n));
+}
+
+// Cheapest CPU seconds to reach relative standard error r with runs of this size, and the seeds
+// that takes (at least 2, so that the error itself can be estimated).
+std::pair<double, int> cost_to_reach(const validation::SimulationCostPoint& p, double r) {
+  const int seeds = std::max(2, static_cast<int>(std::ceil(std::pow(p.relative_sd_per_run / r, 2))));
+  return {seeds * p.cpu_seconds_per_run, seeds};
+}
+
 void bench_simulation(const BenchOptions& o) {
-  // The flux-shuffled gas obeys molecular chaos, so theory's A is the exact answer: the error of
-  // the ensemble mean against it, and its standard error, against the CPU time spent.
+  // The flux-shuffled gas obeys molecular chaos, so theory's A is the exact answer. For each N
+  // the same work (particle-runs) is spent; the scatter of A over the runs and the CPU seconds
+  // per run give, for any target relative standard error r, the seeds and seconds needed,
+  // (sd/r)^2 runs; the mean over the runs against theory bounds the finite-N bias.
   std::string csv = fmt::format(
-      "# molchaos bench --simulation: flux gas, d = 2, n = 0.05, eps = 0.9\n# version = {}\n",
-      k_version);
-  csv += "particles,seeds,cpu_seconds,A,A_err,A_theory,relative_error,relative_standard_error\n";
-  std::cout << fmt::format("{:>9} {:>6} {:>10} {:>10} {:>9} {:>12} {:>12}\n", "N", "seeds",
-                           "cpu [s]", "A", "A_err", "rel. error", "rel. SE");
-  for (long long n : o.particles)
-    for (int seeds : o.seeds) {
-      validation::EnsembleSpec spec;
-      spec.particles = n;
-      spec.densities = {0.05};
-      spec.restitutions = {0.9};
-      spec.modes = {sim::Randomization::flux};
-      spec.seeds = seeds;
-      spec.contact_statistics = false;
-      validation::SweepOptions so;
-      so.threads = 1;
-      so.progress = false;
-      so.version = k_version;
-      const auto start = std::chrono::steady_clock::now();
-      const auto points = validation::summarize(
-          spec, validation::run_sweep(validation::expand(spec), so), validation::WindowRule{});
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const auto& p = points.at(0);
-      const double rel = (p.summary.A.value - p.A_theory.value) / p.A_theory.value;
-      const double rel_se = p.summary.A.error / p.A_theory.value;
-      std::cout << fmt::format("{:>9} {:>6} {:>10.2f} {:>10.4f} {:>9.4f} {:>12.2e} {:>12.2e}\n", n,
-                               seeds, seconds, p.summary.A.value, p.summary.A.error, rel, rel_se);
-      csv += fmt::format("{},{},{:.3f},{:.6f},{:.6f},{:.6f},{:.4e},{:.4e}\n", n, seeds, seconds,
-                         p.summary.A.value, p.summary.A.error, p.A_theory.value, rel, rel_se);
+      "# molchaos bench --simulation: flux gas, d = 2, n = 0.05, eps = 0.9, runs of 4 tau0\n"
+      "# version = {}\n# work = {} particle-runs per N (seeds = max({}, work / N))\n",
+      k_version, o.work, k_min_seeds);
+  csv +=
+      "particles,seeds,cpu_seconds_per_run,A,A_err,A_theory,relative_bias,relative_bias_error,"
+      "relative_sd_per_run,cpu_seconds_for_0.5pc,seeds_for_0.5pc,cpu_seconds_for_0.1pc,seeds_for_"
+      "0.1pc\n";
+  std::cout << fmt::format("{:>7} {:>5} {:>9} {:>18} {:>20} {:>9} {:>16} {:>16}\n", "N", "seeds",
+                           "cpu/run", "A", "rel. bias", "rel. sd", "0.5 %: s (seeds)",
+                           "0.1 %: s (seeds)");
+  validation::SimulationWorkPrecisionData data;
+  data.title = "flux gas, d = 2, n = 0.05, {/Symbol e} = 0.9: standard error of A against cost";
+  for (long long n : o.particles) {
+    validation::EnsembleSpec spec;
+    spec.particles = n;
+    spec.densities = {0.05};
+    spec.restitutions = {0.9};
+    spec.modes = {sim::Randomization::flux};
+    spec.seeds = seeds_for(o, n);
+    spec.base_seed = 1000;  // not the seeds make reproduce uses
+    spec.contact_statistics = false;
+    validation::SweepOptions so;
+    so.threads = o.threads;
+    so.progress = true;
+    so.label = fmt::format("bench N = {}", n);
+    so.version = k_version;
+    const double start = cpu_seconds();
+    const auto points = validation::summarize(
+        spec, validation::run_sweep(validation::expand(spec), so), validation::WindowRule{});
+    const double seconds = cpu_seconds() - start;  // all threads: CPU, not wall time
+    const auto& s = points.at(0).summary;
+    const double theory = points.at(0).A_theory.value;
+    if (s.runs < 2) throw std::runtime_error(fmt::format("bench: N = {}: fewer than 2 fitted runs", n));
+    validation::SimulationCostPoint p;
+    p.particles = n;
+    p.seeds = s.runs;
+    p.cpu_seconds_per_run = seconds / spec.seeds;
+    p.relative_sd_per_run = s.A.error * std::sqrt(static_cast<double>(s.runs)) / theory;
+    p.relative_bias = (s.A.value - theory) / theory;
+    p.relative_bias_error = s.A.error / theory;
+    data.points.push_back(p);
+    const auto [t05, n05] = cost_to_reach(p, 5e-3);
+    const auto [t01, n01] = cost_to_reach(p, 1e-3);
+    std::cout << fmt::format(
+        "{:>7} {:>5} {:>9.3f} {:>9.4f} ± {:<6.4f} {:>+9.2e} ± {:<8.1e} {:>9.2e} {:>8.1f} ({:>5}) "
+        "{:>8.1f} ({:>5})\n",
+        n, p.seeds, p.cpu_seconds_per_run, s.A.value, s.A.error, p.relative_bias,
+        p.relative_bias_error, p.relative_sd_per_run, t05, n05, t01, n01);
+    csv += fmt::format("{},{},{:.4f},{:.6f},{:.6f},{:.6f},{:.4e},{:.4e},{:.4e},{:.2f},{},{:.2f},{}\n",
+                       n, p.seeds, p.cpu_seconds_per_run, s.A.value, s.A.error, theory,
+                       p.relative_bias, p.relative_bias_error, p.relative_sd_per_run, t05, n05,
+                       t01, n01);
+  }
+  // The recommendation: for each target, the cheapest N among those whose measured bias is
+  // consistent with zero (within 2 standard errors) and resolved below the target.
+  for (double r : data.targets) {
+    const validation::SimulationCostPoint* best = nullptr;
+    double best_cost = 0;
+    for (const auto& p : data.points) {
+      const bool unbiased = std::fabs(p.relative_bias) <= 2 * p.relative_bias_error &&
+                            2 * p.relative_bias_error < r;
+      const double cost = cost_to_reach(p, r).first;
+      if (unbiased && (best == nullptr || cost < best_cost)) {
+        best = &p;
+        best_cost = cost;
+      }
     }
+    const std::string line =
+        best == nullptr
+            ? fmt::format("target {:.1f} %: no N has its bias resolved below the target at this "
+                          "work (raise --work)",
+                          100 * r)
+            : fmt::format("target {:.1f} %: cheapest N = {} with {} seeds, {:.1f} CPU s "
+                          "(bias {:+.2e} ± {:.1e})",
+                          100 * r, best->particles, cost_to_reach(*best, r).second, best_cost,
+                          best->relative_bias, best->relative_bias_error);
+    std::cout << line << '\n';
+    csv += "# " + line + '\n';
+  }
+#ifdef MOLCHAOS_HAVE_FIGURES
+  figures::RenderOptions ro;
+  ro.output_directory = o.out;
+  figures::render_simulation_cost(data, ro);
+#endif
   validation::write_file_atomically(
       (std::filesystem::path(o.out) / "work_precision_simulation.csv").string(), csv);
 }
@@ -128,13 +198,16 @@ void add_bench_command(CLI::App& app) {
   cmd->add_flag("--theory", o->theory,
                 "coefficient table: CPU time vs tolerance and error reached");
   cmd->add_flag("--simulation", o->simulation,
-                "flux gas: error of A vs CPU seconds over N and seeds");
+                "flux gas: error of A vs CPU seconds over N (same work each)");
   cmd->add_option("--particles", o->particles, "N values (comma separated)")
       ->delimiter(',')
       ->check(integer_in(100, 10000000));
-  cmd->add_option("--seeds", o->seeds, "seed counts (comma separated)")
-      ->delimiter(',')
-      ->check(integer_in(1, 10000));
+  cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
+      ->check(integer_in(1000, 1000000000))
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
+      ->check(integer_in(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
 }

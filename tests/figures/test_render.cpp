@@ -190,6 +190,15 @@ val::WorkPrecisionData synthetic_work_precision() {
   return data;
 }
 
+val::SimulationWorkPrecisionData synthetic_simulation_cost() {
+  val::SimulationWorkPrecisionData data;
+  data.title = "flux gas";
+  for (int k = 0; k < 3; ++k)
+    data.points.push_back({1000 * (k + 1), 40, 0.1 * (k + 1), 0.011 / std::sqrt(k + 1.0), 1e-4,
+                           2e-4});
+  return data;
+}
+
 template <class Function>
 void check_invalid_argument(Function&& function, const std::string& field) {
   try {
@@ -229,6 +238,12 @@ BOOST_AUTO_TEST_CASE(work_precision_renders_png_pdf_and_script) {
   const OutputDirectory out("work_precision");
   check_rendered(fig::render_work_precision(synthetic_work_precision(), out.options(), "fig_wp"),
                  out.path, "fig_wp");
+}
+
+BOOST_AUTO_TEST_CASE(simulation_cost_renders_png_pdf_and_script) {
+  const OutputDirectory out("simulation_cost");
+  check_rendered(fig::render_simulation_cost(synthetic_simulation_cost(), out.options()), out.path,
+                 "work_precision_simulation");
 }
 
 BOOST_AUTO_TEST_CASE(png_only_writes_no_pdf) {
@@ -283,6 +298,14 @@ BOOST_AUTO_TEST_CASE(bad_data_throws_invalid_argument_naming_the_field) {
   wp.points[0].seconds = 0.0;
   check_invalid_argument([&] { fig::render_work_precision(wp, out.options(), "wp"); },
                          "WorkPrecisionData.points[0].seconds");
+
+  auto cost = synthetic_simulation_cost();
+  cost.points[1].cpu_seconds_per_run = 0.0;
+  check_invalid_argument([&] { fig::render_simulation_cost(cost, out.options()); },
+                         "SimulationWorkPrecisionData.points[1]");
+  check_invalid_argument(
+      [&] { fig::render_simulation_cost(val::SimulationWorkPrecisionData{}, out.options()); },
+      "SimulationWorkPrecisionData.points");
 
   // Nothing is written for data that cannot be drawn.
   BOOST_TEST((!fs::exists(out.path) || fs::is_empty(out.path)));

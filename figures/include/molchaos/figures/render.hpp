@@ -48,4 +48,9 @@ RenderedFigure render_snapshot(const validation::SnapshotData& data, const Rende
 RenderedFigure render_work_precision(const validation::WorkPrecisionData& data,
                                      const RenderOptions& options, const std::string& basename);
 
+/// Relative standard error of A against CPU seconds, one line per N, targets dashed.
+/// Writes work_precision_simulation.{png,pdf,gp}.
+RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionData& data,
+                                      const RenderOptions& options);
+
 }  // namespace molchaos::figures

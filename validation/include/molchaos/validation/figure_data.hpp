@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -110,6 +111,23 @@ struct WorkPrecisionPoint {
 struct WorkPrecisionData {
   std::string title;
   std::vector<WorkPrecisionPoint> points;
+};
+
+/// Cost and scatter of one system size in the simulation's work–precision measurement (the
+/// flux-shuffled gas, where kinetic theory's A is exact). Relative quantities are over A_theory.
+struct SimulationCostPoint {
+  std::int64_t particles = 0;
+  int seeds = 0;
+  double cpu_seconds_per_run = 0.0;
+  double relative_sd_per_run = 0.0;  ///< standard deviation of A over runs
+  double relative_bias = 0.0;        ///< (mean A − A_theory)/A_theory
+  double relative_bias_error = 0.0;  ///< its standard error
+};
+
+struct SimulationWorkPrecisionData {
+  std::string title;
+  std::vector<SimulationCostPoint> points;
+  std::vector<double> targets{5e-3, 1e-3};  ///< relative standard errors aimed at
 };
 
 /// One row of the comparison table: theory, simulation and the paper on one number.
