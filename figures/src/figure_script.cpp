@@ -269,6 +269,20 @@ void require_non_empty(const std::string& field, std::size_t size) {
   if (size == 0) throw std::invalid_argument(field + " is empty");
 }
 
+void begin_log_log(FigureScript& script, const std::string& title, const std::string& xlabel,
+                   const std::string& ylabel) {
+  std::string& c = script.commands;
+  if (!title.empty()) c += "  set title " + quote(title) + "\n";
+  c += "  set logscale xy\n  set format x '10^{%L}'\n  set format y '10^{%L}'\n";
+  c += "  set xlabel " + quote(xlabel) + "\n  set ylabel " + quote(ylabel) + "\n";
+  c += "  set key top right spacing 1.25 samplen 2 box opaque\n";
+  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
+}
+
+void add_plot_element(std::string& plot, const std::string& element) {
+  plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
+}
+
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position) {
   script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);

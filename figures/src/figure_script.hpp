@@ -47,6 +47,14 @@ void require_same_size(const std::string& field, std::size_t size, const std::st
                        std::size_t other_size);
 void require_non_empty(const std::string& field, std::size_t size);
 
+/// Title, log-log axes with 10^k tick labels, axis labels, boxed key and light grid of a
+/// work-precision diagram.
+void begin_log_log(FigureScript& script, const std::string& title, const std::string& xlabel,
+                   const std::string& ylabel);
+
+/// Appends one element to a plot command being built ("  plot a, \\\n       b").
+void add_plot_element(std::string& plot, const std::string& element);
+
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position);

@@ -18,17 +18,10 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
   script.basename = "work_precision_simulation";
   script.description =
       "Simulation work-precision: relative standard error of A against CPU seconds, per N.";
-  std::string& c = script.commands;
-  if (!data.title.empty()) c += "  set title " + detail::quote(data.title) + "\n";
-  c += "  set logscale xy\n  set format x '10^{%L}'\n  set format y '10^{%L}'\n";
-  c += "  set xlabel 'CPU seconds spent on the ensemble'\n";
-  c += "  set ylabel 'relative standard error of A'\n";
-  c += "  set key top right spacing 1.25 samplen 2 box opaque\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
+  detail::begin_log_log(script, data.title, "CPU seconds spent on the ensemble",
+                        "relative standard error of A");
   std::string plot;
-  const auto add = [&plot](const std::string& element) {
-    plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
-  };
+  const auto add = [&plot](const std::string& element) { detail::add_plot_element(plot, element); };
   for (std::size_t k = 0; k < data.points.size(); ++k) {
     const auto& p = data.points[k];
     const std::string field = "SimulationWorkPrecisionData.points[" + std::to_string(k) + "]";
@@ -55,7 +48,7 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
     add(detail::number(data.targets[k]) + " with lines dashtype " + dashes[k % 3] +
         " linecolor rgb '#555555' title " +
         detail::quote("target " + detail::label_number(100.0 * data.targets[k]) + " %"));
-  c += plot + "\n";
+  script.commands += plot + "\n";
   return detail::render(script, options);
 }
 

@@ -46,20 +46,14 @@ RenderedFigure render_work_precision(const validation::WorkPrecisionData& data,
   script.basename = basename;
   script.description =
       "Work-precision diagram of the quadrature: columns error, CPU seconds, requested tolerance.";
+  detail::begin_log_log(script, data.title, "error  (max over coefficients)", "CPU time  [s]");
   std::string& c = script.commands;
-  if (!data.title.empty()) c += "  set title " + detail::quote(data.title) + "\n";
-  c += "  set logscale xy\n  set format x '10^{%L}'\n  set format y '10^{%L}'\n";
-  c += "  set xlabel 'error  (max over coefficients)'\n  set ylabel 'CPU time  [s]'\n";
-  c += "  set key top right spacing 1.25 samplen 2 box opaque\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd' dashtype solid\n";
   c += "  set tics scale 1.5,0.75\n  set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n";
   // "10^{-6}" for a power of ten, "2.5·10^{-7}" otherwise.
   c += "  tolerance_label(t) = abs(t / 10**floor(log10(t) + 1e-9) - 1) < 1e-6 ? "
        "sprintf('10^{%d}', floor(log10(t) + 0.5)) : gprintf('%.1t·10^{%T}', t)\n";
   std::string plot;
-  const auto add = [&plot](const std::string& element) {
-    plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
-  };
+  const auto add = [&plot](const std::string& element) { detail::add_plot_element(plot, element); };
   if (!reached.empty()) {
     script.data.emplace_back("reached", reached);
     std::string title = "error reached |computed − exact|";
