@@ -46,6 +46,11 @@ constexpr int stencil_size() {
 }
 
 template <int D>
+constexpr int slab_size() {
+  return D == 2 ? 3 : 9;
+}
+
+template <int D>
 void cell_coords(int c, int cps, int* x) {
   for (int a = 0; a < D; ++a) {
     x[a] = c % cps;
@@ -145,6 +150,13 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
     neighbour_cells<D>(middle, cells_per_side_, around);
     for (int s = 0; s < stencil_size<D>(); ++s)
       stencil_offset_[s] = around[s] - cell_index<D>(middle, cells_per_side_);
+    for (int axis = 0; axis < D; ++axis)
+      for (int up = 0; up < 2; ++up) {
+        int slab[stencil_size<D>()];
+        slab_cells<D>(middle, cells_per_side_, axis, up ? 1 : -1, slab);
+        for (int s = 0; s < slab_size<D>(); ++s)
+          slab_offset_[2 * axis + up][s] = slab[s] - cell_index<D>(middle, cells_per_side_);
+      }
   }
 
   rule_.restitution = p.restitution;
@@ -759,10 +771,18 @@ void Engine<D>::build_neighbour_lists() {
 // the other cells were predicted before, by i or by the partner (whichever changed last).
 template <int D>
 void Engine<D>::predict_slab(std::int32_t i, int axis, int direction) {
-  int slab[stencil_size<D>()];
-  const int count = slab_cells<D>(cell_xyz_[i].data(), cells_per_side_, axis, direction, slab);
+  int slab[slab_size<D>()];
+  const int* x = cell_xyz_[i].data();
+  bool interior = true;
+  for (int a = 0; a < D; ++a) interior = interior && x[a] > 0 && x[a] < cells_per_side_ - 1;
+  if (interior) {  // no periodic wrap: fixed offsets
+    const int* offset = slab_offset_[2 * axis + (direction > 0)].data();
+    for (int s = 0; s < slab_size<D>(); ++s) slab[s] = part_[i].cell + offset[s];
+  } else {
+    slab_cells<D>(x, cells_per_side_, axis, direction, slab);
+  }
   double best = ev_[i].coll_time;
-  for (int s = 0; s < count; ++s)
+  for (int s = 0; s < slab_size<D>(); ++s)
     for (const std::int32_t j : cell_members(slab[s])) {
       const double t = pair_time(i, j);
       if (t < best) {
@@ -802,7 +822,7 @@ void Engine<D>::cross_cell(std::int32_t i) {
     }
   }
   cell_remove(i);
-  cell_insert(i, cell_index<D>(x, cells_per_side_));
+  cell_insert(i, cell_index<D>(x, cells_per_side_), x);
   predict_slab(i, axis, direction);
 }
 
@@ -914,12 +934,20 @@ void Engine<D>::build_cells() {
 
 template <int D>
 void Engine<D>::cell_insert(std::int32_t i, int c) {
+  int x[D];
+  cell_coords<D>(c, cells_per_side_, x);
+  cell_insert(i, c, x);
+}
+
+// Files i in cell c with coordinates x (no divisions: the hot path knows x).
+template <int D>
+void Engine<D>::cell_insert(std::int32_t i, int c, const int* x) {
   if (count_[c] == capacity_) grow_cells();  // i is not filed now, grow_cells skips it
   part_[i].cell = c;
-  cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
-  const std::size_t slot = static_cast<std::size_t>(c) * capacity_ + count_[c]++;
-  slots_[slot] = i;
-  slot_[i] = static_cast<std::int32_t>(slot % capacity_);
+  for (int a = 0; a < D; ++a) cell_xyz_[i][a] = x[a];
+  const std::int32_t k = count_[c]++;
+  slots_[static_cast<std::size_t>(c) * capacity_ + k] = i;
+  slot_[i] = k;
 }
 
 // More slots per cell (a cluster formed): doubles the capacity and re-files every particle.
@@ -931,9 +959,9 @@ void Engine<D>::grow_cells() {
   for (std::int32_t k = 0; k < n_; ++k)
     if (slot_[k] >= 0) {
       const int c = part_[k].cell;
-      const std::size_t slot = static_cast<std::size_t>(c) * capacity_ + count_[c]++;
-      slots_[slot] = k;
-      slot_[k] = static_cast<std::int32_t>(slot % capacity_);
+      const std::int32_t m = count_[c]++;
+      slots_[static_cast<std::size_t>(c) * capacity_ + m] = k;
+      slot_[k] = m;
     }
 }
 

@@ -125,6 +125,7 @@ class Engine {
   void build_cells();
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
+  void cell_insert(std::int32_t i, int c, const int* x);
   void cell_remove(std::int32_t i);
   void grow_cells();
   void position_now(std::int32_t i, double* r) const;
@@ -138,6 +139,9 @@ class Engine {
   int cells_per_side_ = 0;
   double cell_width_ = 0;
   std::array<int, D == 2 ? 9 : 27> stencil_offset_{};  // neighbour cells of an interior cell
+  // The cells entering the stencil of an interior cell entered along axis a, upwards (u = 1) or
+  // downwards (u = 0): slab_offset_[2 a + u].
+  std::array<std::array<int, D == 2 ? 3 : 9>, 2 * D> slab_offset_{};
 
   // The record a pair prediction reads about the partner, one per particle (48 bytes for d = 2,
   // one 64-byte cache line for d = 3): an array of small structs rather than separate arrays,
