@@ -143,6 +143,10 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
     throw std::invalid_argument("particles: box side " + std::to_string(box_) +
                                 " is below 3 sigma; use more particles or a higher density");
   cell_width_ = box_ / cells_per_side_;
+  wall_.resize(static_cast<std::size_t>(cells_per_side_) + 1);
+  for (int k = 0; k < cells_per_side_; ++k) wall_[k] = k * cell_width_;
+  wall_[cells_per_side_] = box_;
+  for (int a = 0, stride = 1; a < D; ++a, stride *= cells_per_side_) stride_[a] = stride;
   {
     int middle[D];
     for (int a = 0; a < D; ++a) middle[a] = 1;
@@ -601,28 +605,23 @@ template <int D>
 }
 
 template <int D>
-void Engine<D>::crossing(std::int32_t i) {
+[[gnu::always_inline]] inline void Engine<D>::crossing(std::int32_t i) {
   const int* x = cell_xyz_[i].data();
+  const Particle& p = part_[i];
   double best = k_inf;
   int axis = 0;
   for (int a = 0; a < D; ++a) {
-    const double u = part_[i].v[a];
-    double dt;
-    if (u > 0) {
-      const double hi = x[a] + 1 == cells_per_side_ ? box_ : (x[a] + 1) * cell_width_;
-      dt = (hi - part_[i].r[a]) / u;
-    } else if (u < 0) {
-      dt = (x[a] * cell_width_ - part_[i].r[a]) / u;
-    } else {
-      continue;
-    }
+    const double u = p.v[a];
+    if (u == 0) continue;
+    // wall_[k] = k * cell_width_ (k < cells_per_side_), wall_[cells_per_side_] = box_.
+    const double dt = (wall_[x[a] + (u > 0)] - p.r[a]) / u;
     if (dt < best) {
       best = dt;
       axis = a;
     }
   }
   ev_[i].cross_time = now_ + std::max(best, 0.0);
-  ev_[i].cross_axis = static_cast<std::int8_t>(axis);
+  ev_[i].cross_axis = axis;
 }
 
 template <int D>
@@ -769,61 +768,86 @@ void Engine<D>::build_neighbour_lists() {
 
 // After a cell crossing only the cells that came into range can hold new partners: pairs with
 // the other cells were predicted before, by i or by the partner (whichever changed last).
+// A cell crossing: i moves to its next cell (exactly onto the wall), and only the cells that came
+// into range can hold new partners: pairs with the other cells were predicted before, by i or by
+// the partner (whichever changed last). One function for the whole event (the hot path of dilute
+// systems: most events are crossings).
 template <int D>
-void Engine<D>::predict_slab(std::int32_t i, int axis, int direction) {
-  int slab[slab_size<D>()];
-  const int* x = cell_xyz_[i].data();
-  bool interior = true;
-  for (int a = 0; a < D; ++a) interior = interior && x[a] > 0 && x[a] < cells_per_side_ - 1;
-  if (interior) {  // no periodic wrap: fixed offsets
-    const int* offset = slab_offset_[2 * axis + (direction > 0)].data();
-    for (int s = 0; s < slab_size<D>(); ++s) slab[s] = part_[i].cell + offset[s];
+void Engine<D>::cross_cell(std::int32_t i) {
+  advance_particle(i);
+  Particle& p = part_[i];
+  const int axis = ev_[i].cross_axis;
+  const bool up = p.v[axis] > 0;
+  int* x = cell_xyz_[i].data();
+  const int old_cell = p.cell;
+  int step;  // change of the cell index
+  if (up) {
+    if (x[axis] + 1 == cells_per_side_) {
+      x[axis] = 0;
+      p.r[axis] = 0.0;
+      step = -(cells_per_side_ - 1) * stride_[axis];
+    } else {
+      ++x[axis];
+      p.r[axis] = wall_[x[axis]];
+      step = stride_[axis];
+    }
   } else {
-    slab_cells<D>(x, cells_per_side_, axis, direction, slab);
+    if (x[axis] == 0) {
+      x[axis] = cells_per_side_ - 1;
+      p.r[axis] = box_;
+      step = (cells_per_side_ - 1) * stride_[axis];
+    } else {
+      p.r[axis] = wall_[x[axis]];
+      --x[axis];
+      step = -stride_[axis];
+    }
+  }
+  const int c = old_cell + step;
+  // Out of the old cell (swap-remove: the cell's last member takes i's slot), into the new one.
+  {
+    const std::size_t base = static_cast<std::size_t>(old_cell) * capacity_;
+    const std::int32_t last = slots_[base + --count_[old_cell]];
+    slots_[base + slot_[i]] = last;
+    slot_[last] = slot_[i];
+  }
+  if (count_[c] == capacity_) [[unlikely]] {
+    slot_[i] = -1;
+    grow_cells();
+  }
+  p.cell = c;
+  {
+    const std::int32_t k = count_[c]++;
+    slots_[static_cast<std::size_t>(c) * capacity_ + k] = i;
+    slot_[i] = k;
+  }
+
+  int slab[slab_size<D>()];
+  bool interior = true;
+  for (int a = 0; a < D; ++a)
+    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
+  if (interior) {  // no periodic wrap: fixed offsets
+    const int* offset = slab_offset_[2 * axis + up].data();
+    for (int s = 0; s < slab_size<D>(); ++s) slab[s] = c + offset[s];
+  } else {
+    slab_cells<D>(x, cells_per_side_, axis, up ? 1 : -1, slab);
   }
   double best = ev_[i].coll_time;
+  std::int32_t partner = -1;
   for (int s = 0; s < slab_size<D>(); ++s)
     for (const std::int32_t j : cell_members(slab[s])) {
       const double t = pair_time(i, j);
       if (t < best) {
         best = t;
-        ev_[i].partner = j;
-        ev_[i].partner_counter = part_[j].counter;
+        partner = j;
       }
     }
-  ev_[i].coll_time = best;
+  if (partner >= 0) {
+    ev_[i].coll_time = best;
+    ev_[i].partner = partner;
+    ev_[i].partner_counter = part_[partner].counter;
+  }
   crossing(i);
   calendar_.update(i, std::min(best, ev_[i].cross_time));
-}
-
-template <int D>
-void Engine<D>::cross_cell(std::int32_t i) {
-  advance_particle(i);
-  const int axis = ev_[i].cross_axis;
-  const int direction = part_[i].v[axis] > 0 ? 1 : -1;
-  int x[D];
-  for (int a = 0; a < D; ++a) x[a] = cell_xyz_[i][a];
-  double& coordinate = part_[i].r[axis];
-  if (direction > 0) {
-    if (x[axis] + 1 == cells_per_side_) {
-      x[axis] = 0;
-      coordinate = 0.0;
-    } else {
-      ++x[axis];
-      coordinate = x[axis] * cell_width_;
-    }
-  } else {
-    if (x[axis] == 0) {
-      x[axis] = cells_per_side_ - 1;
-      coordinate = box_;
-    } else {
-      coordinate = x[axis] * cell_width_;
-      --x[axis];
-    }
-  }
-  cell_remove(i);
-  cell_insert(i, cell_index<D>(x, cells_per_side_), x);
-  predict_slab(i, axis, direction);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -106,7 +106,6 @@ class Engine {
   void collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle);
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
-  void predict_slab(std::int32_t i, int axis, int direction);
   double pair_time(std::int32_t i, std::int32_t j) const;
   void crossing(std::int32_t i);
   void shell_exit(std::int32_t i);
@@ -142,6 +141,8 @@ class Engine {
   // The cells entering the stencil of an interior cell entered along axis a, upwards (u = 1) or
   // downwards (u = 0): slab_offset_[2 a + u].
   std::array<std::array<int, D == 2 ? 3 : 9>, 2 * D> slab_offset_{};
+  std::array<int, D> stride_{};  // cell index change per step along each axis
+  std::vector<double> wall_;     // cell walls: k * cell_width_, and box_ for the last one
 
   // The record a pair prediction reads about the partner, one per particle (48 bytes for d = 2,
   // one 64-byte cache line for d = 3): an array of small structs rather than separate arrays,
