@@ -8,6 +8,9 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "molchaos/sim/run.hpp"
 
@@ -186,6 +189,7 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
   const double mean = static_cast<double>(n_) / static_cast<double>(cells);
   capacity_ = std::max(4, static_cast<int>(std::ceil(3 * mean + 4)));
   slots_.assign(cells * static_cast<std::size_t>(capacity_), -1);
+  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_);
 
   Rng rng(p.seed);
   place_particles(rng);
@@ -583,15 +587,62 @@ void Engine<D>::position_now(std::int32_t i, double* r) const {
 
 // Time of contact of i (at now_) and j (at its local time), or +inf: the smaller root of
 // |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)).
+//
+// With SSE2 the whole computation is branch-free (the approach test b < 0 and the discriminant
+// test are coin flips for the branch predictor): the root is computed for every pair and replaced
+// by +inf unless b < 0 and disc >= 0. The arithmetic is the scalar code's, operation for
+// operation (the x and y components side by side in one register); the periodic wrap adds or
+// subtracts a masked box length instead of branching, which can only change the sign of a zero
+// component. collide() recomputes b with the scalar loop; the two can then differ at most in the
+// sign of a zero b, which both treat as "not approaching".
 template <int D>
 [[gnu::always_inline]] inline double Engine<D>::pair_time(std::int32_t i, std::int32_t j) const {
-  const double dtj = now_ - part_[j].t;
+  const Particle& pi = part_[i];
+  const Particle& pj = part_[j];
+#if defined(__SSE2__)
+  const __m128d zero = _mm_setzero_pd();
+  const __m128d now = _mm_set1_pd(now_);
+  const __m128d dtj = _mm_sub_pd(now, _mm_set1_pd(pj.t));
+  const __m128d half = _mm_set1_pd(half_box_), minus_half = _mm_set1_pd(-half_box_);
+  const __m128d box = _mm_set1_pd(box_);
+  // x, y: d = r_i - (r_j + v_j dtj), nearest image; dv = v_i - v_j.
+  __m128d d = _mm_sub_pd(_mm_loadu_pd(pi.r),
+                         _mm_add_pd(_mm_loadu_pd(pj.r), _mm_mul_pd(_mm_loadu_pd(pj.v), dtj)));
+  d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
+  d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
+  const __m128d dv = _mm_sub_pd(_mm_loadu_pd(pi.v), _mm_loadu_pd(pj.v));
+  __m128d pb = _mm_mul_pd(d, dv), pr = _mm_mul_pd(d, d), pv = _mm_mul_pd(dv, dv);
+  // Sums in the scalar order (x + y) + z (the scalar code's leading 0 + x is exact but for the
+  // sign of a zero b).
+  __m128d b = _mm_add_sd(pb, _mm_unpackhi_pd(pb, pb));
+  __m128d dr2 = _mm_add_sd(pr, _mm_unpackhi_pd(pr, pr));
+  __m128d dv2 = _mm_add_sd(pv, _mm_unpackhi_pd(pv, pv));
+  if constexpr (D == 3) {
+    __m128d z = _mm_sub_sd(_mm_load_sd(&pi.r[2]),
+                           _mm_add_sd(_mm_load_sd(&pj.r[2]), _mm_mul_sd(_mm_load_sd(&pj.v[2]), dtj)));
+    z = _mm_sub_sd(z, _mm_and_pd(_mm_cmpgt_sd(z, half), box));
+    z = _mm_add_sd(z, _mm_and_pd(_mm_cmplt_sd(z, minus_half), box));
+    const __m128d w = _mm_sub_sd(_mm_load_sd(&pi.v[2]), _mm_load_sd(&pj.v[2]));
+    b = _mm_add_sd(b, _mm_mul_sd(z, w));
+    dr2 = _mm_add_sd(dr2, _mm_mul_sd(z, z));
+    dv2 = _mm_add_sd(dv2, _mm_mul_sd(w, w));
+  }
+  const __m128d c = _mm_sub_sd(dr2, _mm_set_sd(1.0));
+  const __m128d disc = _mm_sub_sd(_mm_mul_sd(b, b), _mm_mul_sd(dv2, c));
+  const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(disc, zero));
+  const __m128d dt = _mm_div_sd(c, _mm_sub_sd(root, b));        // c / (-b + sqrt(disc))
+  const __m128d t = _mm_add_sd(now, _mm_max_sd(dt, zero));       // dt > 0 ? now + dt : now
+  const __m128d valid = _mm_and_pd(_mm_cmplt_sd(b, zero), _mm_cmpge_sd(disc, zero));
+  return _mm_cvtsd_f64(
+      _mm_or_pd(_mm_and_pd(valid, t), _mm_andnot_pd(valid, _mm_set_sd(k_inf))));
+#else
+  const double dtj = now_ - pj.t;
   double b = 0, dr2 = 0, dv2 = 0;
   for (int a = 0; a < D; ++a) {
-    double d = part_[i].r[a] - (part_[j].r[a] + part_[j].v[a] * dtj);
+    double d = pi.r[a] - (pj.r[a] + pj.v[a] * dtj);
     if (d > half_box_) d -= box_;
     if (d < -half_box_) d += box_;
-    const double dv = part_[i].v[a] - part_[j].v[a];
+    const double dv = pi.v[a] - pj.v[a];
     b += d * dv;
     dr2 += d * d;
     dv2 += dv * dv;
@@ -602,6 +653,51 @@ template <int D>
   if (disc < 0) return k_inf;
   const double dt = c / (-b + std::sqrt(disc));
   return dt > 0 ? now_ + dt : now_;  // c < 0: overlapping by rounding and approaching: now
+#endif
+}
+
+// The members of the given cells, gathered into candidates_: each cell's slot block is copied
+// whole (a trip count the branch predictor knows) and the write position advanced by the
+// member count. Returns the number of candidates.
+template <int D>
+[[gnu::always_inline]] inline std::int32_t Engine<D>::gather(const int* cells, int count) {
+  std::int32_t* out = candidates_.data();
+  const std::int32_t* slots = slots_.data();
+  const int capacity = capacity_;
+  std::int32_t k = 0;
+  if (capacity <= 16) {
+    for (int s = 0; s < count; ++s) {
+      const std::int32_t* src = slots + static_cast<std::size_t>(cells[s]) * capacity;
+      for (int m = 0; m < capacity; ++m) out[k + m] = src[m];
+      k += count_[cells[s]];
+    }
+  } else {  // crowded cells (clusters): copy the members only
+    for (int s = 0; s < count; ++s) {
+      const std::int32_t* src = slots + static_cast<std::size_t>(cells[s]) * capacity;
+      const std::int32_t members = count_[cells[s]];
+      for (int m = 0; m < members; ++m) out[k + m] = src[m];
+      k += members;
+    }
+  }
+  return k;
+}
+
+// The earliest collision of i (at now_) with the listed candidates after `best`: updates best and
+// partner. Branch-free selection; candidates in list order, the first of equal times wins.
+template <int D>
+[[gnu::always_inline]] inline void Engine<D>::earliest(std::int32_t i, const std::int32_t* list,
+                                                       std::int32_t count, double& best,
+                                                       std::int32_t& partner) const {
+  double b = best;
+  std::int32_t p = partner;
+  for (std::int32_t k = 0; k < count; ++k) {
+    const std::int32_t j = list[k];
+    const double t = pair_time(i, j);
+    p = t < b ? j : p;
+    b = t < b ? t : b;
+  }
+  best = b;
+  partner = p;
 }
 
 template <int D>
@@ -629,15 +725,9 @@ void Engine<D>::predict(std::int32_t i) {
   advance_particle(i);
   double best = k_inf;
   std::int32_t partner = -1;
-  auto consider = [&](std::int32_t j) {
-    const double t = pair_time(i, j);
-    if (t < best) {
-      best = t;
-      partner = j;
-    }
-  };
   if (neighbour_lists_) {
-    for (const std::int32_t j : neighbours(i)) consider(j);
+    const auto list = neighbours(i);
+    earliest(i, list.data(), static_cast<std::int32_t>(list.size()), best, partner);
   } else {
     int stencil[stencil_size<D>()];
     const int* x = cell_xyz_[i].data();
@@ -648,9 +738,9 @@ void Engine<D>::predict(std::int32_t i) {
     } else {
       neighbour_cells<D>(x, cells_per_side_, stencil);
     }
-    for (int s = 0; s < stencil_size<D>(); ++s)
-      for (const std::int32_t j : cell_members(stencil[s]))
-        if (j != i) consider(j);
+    // i itself is among the candidates: its pair time is +inf (b = 0).
+    const std::int32_t count = gather(stencil, stencil_size<D>());
+    earliest(i, candidates_.data(), count, best, partner);
   }
   ev_[i].coll_time = best;
   ev_[i].partner = partner;
@@ -833,14 +923,8 @@ void Engine<D>::cross_cell(std::int32_t i) {
   }
   double best = ev_[i].coll_time;
   std::int32_t partner = -1;
-  for (int s = 0; s < slab_size<D>(); ++s)
-    for (const std::int32_t j : cell_members(slab[s])) {
-      const double t = pair_time(i, j);
-      if (t < best) {
-        best = t;
-        partner = j;
-      }
-    }
+  const std::int32_t count = gather(slab, slab_size<D>());
+  earliest(i, candidates_.data(), count, best, partner);
   if (partner >= 0) {
     ev_[i].coll_time = best;
     ev_[i].partner = partner;
@@ -978,6 +1062,7 @@ void Engine<D>::cell_insert(std::int32_t i, int c, const int* x) {
 template <int D>
 void Engine<D>::grow_cells() {
   capacity_ *= 2;
+  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_);
   slots_.assign(count_.size() * static_cast<std::size_t>(capacity_), -1);
   std::fill(count_.begin(), count_.end(), 0);
   for (std::int32_t k = 0; k < n_; ++k)

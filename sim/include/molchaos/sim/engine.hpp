@@ -107,6 +107,9 @@ class Engine {
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
   double pair_time(std::int32_t i, std::int32_t j) const;
+  std::int32_t gather(const int* cells, int count);
+  void earliest(std::int32_t i, const std::int32_t* list, std::int32_t count, double& best,
+                std::int32_t& partner) const;
   void crossing(std::int32_t i);
   void shell_exit(std::int32_t i);
   void rebuild_neighbours(std::int32_t i);
@@ -173,6 +176,7 @@ class Engine {
   std::vector<std::int32_t> slots_, count_;
   std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
   int capacity_ = 0;
+  std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
   std::span<const std::int32_t> cell_members(int c) const {
     return {slots_.data() + static_cast<std::size_t>(c) * capacity_,
             static_cast<std::size_t>(count_[c])};
