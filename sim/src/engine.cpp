@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -37,6 +38,8 @@ constexpr std::uint64_t k_stall_limit = 10'000'000;
 template <int D>
 constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.2;
 constexpr double k_overlap_tolerance = 1e-10;
+// Cells with at most this many slots are gathered by fixed-size copies (see gather()).
+constexpr int k_gather_block = 8;
 // Dense spheres use neighbour lists instead of cell crossings (Smallenburg's scheme): a particle
 // lists every particle whose shell centre lies within sigma + 2 * shell of its own, and gets a
 // bookkeeping event when it leaves its shell of radius `shell` around its centre.
@@ -66,6 +69,15 @@ int cell_index(const int* x, int cps) {
   int c = 0;
   for (int a = D - 1; a >= 0; --a) c = c * cps + x[a];
   return c;
+}
+
+// std::min(a, b) for doubles without a branch (GCC branches on it; the order is random here).
+[[gnu::always_inline]] inline double earlier_of(double a, double b) {
+#if defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(b), _mm_set_sd(a)));  // b < a ? b : a
+#else
+  return std::min(a, b);
+#endif
 }
 
 inline int wrap(int x, int cps) { return x < 0 ? x + cps : (x >= cps ? x - cps : x); }
@@ -188,8 +200,8 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
   // Initial slots per cell: room for well above the mean occupancy; grows on overflow.
   const double mean = static_cast<double>(n_) / static_cast<double>(cells);
   capacity_ = std::max(4, static_cast<int>(std::ceil(3 * mean + 4)));
-  slots_.assign(cells * static_cast<std::size_t>(capacity_), -1);
-  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_);
+  slots_.assign(cells * static_cast<std::size_t>(capacity_) + k_gather_block, -1);
+  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_ + k_gather_block);
 
   Rng rng(p.seed);
   place_particles(rng);
@@ -665,10 +677,10 @@ template <int D>
   const std::int32_t* slots = slots_.data();
   const int capacity = capacity_;
   std::int32_t k = 0;
-  if (capacity <= 16) {
+  if (capacity <= k_gather_block) {  // fixed-size copies (slots_ is padded for the last cell)
     for (int s = 0; s < count; ++s) {
       const std::int32_t* src = slots + static_cast<std::size_t>(cells[s]) * capacity;
-      for (int m = 0; m < capacity; ++m) out[k + m] = src[m];
+      std::memcpy(out + k, src, k_gather_block * sizeof(std::int32_t));
       k += count_[cells[s]];
     }
   } else {  // crowded cells (clusters): copy the members only
@@ -706,15 +718,14 @@ template <int D>
   const Particle& p = part_[i];
   double best = k_inf;
   int axis = 0;
-  for (int a = 0; a < D; ++a) {
+  for (int a = 0; a < D; ++a) {  // branch-free selects: the direction is random
     const double u = p.v[a];
-    if (u == 0) continue;
     // wall_[k] = k * cell_width_ (k < cells_per_side_), wall_[cells_per_side_] = box_.
-    const double dt = (wall_[x[a] + (u > 0)] - p.r[a]) / u;
-    if (dt < best) {
-      best = dt;
-      axis = a;
-    }
+    double dt = (wall_[x[a] + (u > 0)] - p.r[a]) / u;
+    dt = u == 0 ? k_inf : dt;  // never crosses along a
+    const int earlier = dt < best;  // the first axis wins a tie
+    axis += earlier * (a - axis);
+    best = earlier_of(best, dt);
   }
   ev_[i].cross_time = now_ + std::max(best, 0.0);
   ev_[i].cross_axis = axis;
@@ -749,7 +760,7 @@ void Engine<D>::predict(std::int32_t i) {
     shell_exit(i);
   else
     crossing(i);
-  calendar_.update(i, std::min(best, ev_[i].cross_time));
+  calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
 // Time at which i (at now_) leaves the sphere of radius shell_ around its list centre.
@@ -870,28 +881,18 @@ void Engine<D>::cross_cell(std::int32_t i) {
   const bool up = p.v[axis] > 0;
   int* x = cell_xyz_[i].data();
   const int old_cell = p.cell;
-  int step;  // change of the cell index
-  if (up) {
-    if (x[axis] + 1 == cells_per_side_) {
-      x[axis] = 0;
-      p.r[axis] = 0.0;
-      step = -(cells_per_side_ - 1) * stride_[axis];
-    } else {
-      ++x[axis];
-      p.r[axis] = wall_[x[axis]];
-      step = stride_[axis];
-    }
-  } else {
-    if (x[axis] == 0) {
-      x[axis] = cells_per_side_ - 1;
-      p.r[axis] = box_;
-      step = (cells_per_side_ - 1) * stride_[axis];
-    } else {
-      p.r[axis] = wall_[x[axis]];
-      --x[axis];
-      step = -stride_[axis];
-    }
+  // The wall crossed: the old cell's upper wall (up) or lower wall; the wrap is the rare case.
+  const int from = x[axis];
+  const int sign = 2 * static_cast<int>(up) - 1;
+  int to = from + sign;
+  p.r[axis] = wall_[from + static_cast<int>(up)];
+  int step = sign * stride_[axis];  // change of the cell index
+  if (static_cast<unsigned>(to) >= static_cast<unsigned>(cells_per_side_)) [[unlikely]] {
+    to = up ? 0 : cells_per_side_ - 1;
+    p.r[axis] = up ? 0.0 : box_;
+    step = (up ? -1 : 1) * (cells_per_side_ - 1) * stride_[axis];
   }
+  x[axis] = to;
   const int c = old_cell + step;
   // Out of the old cell (swap-remove: the cell's last member takes i's slot), into the new one.
   {
@@ -925,13 +926,14 @@ void Engine<D>::cross_cell(std::int32_t i) {
   std::int32_t partner = -1;
   const std::int32_t count = gather(slab, slab_size<D>());
   earliest(i, candidates_.data(), count, best, partner);
-  if (partner >= 0) {
-    ev_[i].coll_time = best;
-    ev_[i].partner = partner;
-    ev_[i].partner_counter = part_[partner].counter;
-  }
+  // best is the old collision time unless a new partner was found (selects, no branch).
+  ev_[i].coll_time = best;
+  const bool found = partner >= 0;
+  const std::uint32_t counter = part_[found ? partner : i].counter;
+  ev_[i].partner = found ? partner : ev_[i].partner;
+  ev_[i].partner_counter = found ? counter : ev_[i].partner_counter;
   crossing(i);
-  calendar_.update(i, std::min(best, ev_[i].cross_time));
+  calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1062,8 +1064,8 @@ void Engine<D>::cell_insert(std::int32_t i, int c, const int* x) {
 template <int D>
 void Engine<D>::grow_cells() {
   capacity_ *= 2;
-  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_);
-  slots_.assign(count_.size() * static_cast<std::size_t>(capacity_), -1);
+  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_ + k_gather_block);
+  slots_.assign(count_.size() * static_cast<std::size_t>(capacity_) + k_gather_block, -1);
   std::fill(count_.begin(), count_.end(), 0);
   for (std::int32_t k = 0; k < n_; ++k)
     if (slot_[k] >= 0) {
