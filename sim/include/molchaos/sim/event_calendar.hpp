@@ -3,7 +3,8 @@
 // buckets of width `bucket_width`; the buckets of the current cycle [cycle_start, cycle_start +
 // buckets) hold doubly linked lists of particles, later events wait in an overflow list that is
 // re-filed when a new cycle starts. Events due in the current bucket or earlier are linked into
-// the current bucket, whose list is scanned for the earliest event. The bucket width is chosen
+// the current bucket, whose list is scanned for the earliest event; a bitmap of occupied buckets
+// leads to the next non-empty bucket without a walk over the empty ones. The bucket width is chosen
 // so that a bucket holds about one event, so the scan is short whatever N (a scan is cheaper
 // than keeping the current bucket in a heap: measured, instruction counts).
 #pragma once
@@ -25,11 +26,12 @@ class EventCalendar {
     origin_ = origin;
     width_ = bucket_width;
     inv_width_ = 1.0 / bucket_width;
-    buckets_ = 1;
+    buckets_ = 64;
     while (buckets_ < buckets) buckets_ *= 2;
     mask_ = buckets_ - 1;
     e_.assign(static_cast<std::size_t>(n), Entry{});
     head_.assign(static_cast<std::size_t>(buckets_), -1);
+    occupied_.assign(static_cast<std::size_t>(buckets_ / 64), 0);
     overflow_ = -1;
     current_ = 0;
     cycle_start_ = 0;
@@ -65,13 +67,25 @@ class EventCalendar {
         if (!jump_to_overflow()) return {k_inf, 0};
         continue;
       }
-      ++current_;
-      if (current_ == cycle_start_ + buckets_) new_cycle();
+      // On to the next occupied bucket. The filed events lie in buckets [current_, cycle_start_ +
+      // buckets_), whose slots follow the current slot cyclically, so the cyclically next set bit
+      // is the earliest of them (and the cycle does not end before it).
+      const std::int64_t slot = current_ & mask_;
+      const std::int64_t words = buckets_ / 64;
+      std::int64_t w = slot >> 6;
+      std::uint64_t bits = occupied_[static_cast<std::size_t>(w)] & (~std::uint64_t{0} << (slot & 63));
+      while (bits == 0) {
+        w = (w + 1) & (words - 1);
+        bits = occupied_[static_cast<std::size_t>(w)];
+      }
+      const std::int64_t next = w * 64 + __builtin_ctzll(bits);
+      current_ += (next - slot) & mask_;
     }
   }
 
   std::size_t memory_bytes() const {
-    return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t);
+    return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t) +
+           occupied_.capacity() * sizeof(std::uint64_t);
   }
 
  private:
@@ -92,6 +106,7 @@ class EventCalendar {
     if (b < cycle_start_ + buckets_) {
       const std::int64_t slot = std::max(b, current_) & mask_;
       link(i, static_cast<std::int32_t>(slot), head_[static_cast<std::size_t>(slot)]);
+      occupied_[static_cast<std::size_t>(slot) >> 6] |= std::uint64_t{1} << (slot & 63);
       ++filed_;
     } else {
       link(i, k_in_overflow, overflow_);
@@ -102,12 +117,14 @@ class EventCalendar {
     const std::int32_t w = e_[i].where;
     if (w == k_absent) return;
     const std::int32_t p = e_[i].prev, q = e_[i].next;
-    if (p >= 0)
+    if (p >= 0) {
       e_[p].next = q;
-    else if (w == k_in_overflow)
+    } else if (w == k_in_overflow) {
       overflow_ = q;
-    else
+    } else {
       head_[static_cast<std::size_t>(w)] = q;
+      if (q < 0) occupied_[static_cast<std::size_t>(w) >> 6] &= ~(std::uint64_t{1} << (w & 63));
+    }
     if (q >= 0) e_[q].prev = p;
     if (w != k_in_overflow) --filed_;
     e_[i].where = k_absent;
@@ -162,6 +179,7 @@ class EventCalendar {
   };
   std::vector<Entry> e_;
   std::vector<std::int32_t> head_;
+  std::vector<std::uint64_t> occupied_;  // bit s set: bucket slot s holds events
   std::int32_t overflow_ = -1;
 };
 
