@@ -402,6 +402,13 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
   for (;;) {
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
+    // Likely the next event's particle: its records load while this event is processed.
+    if (const std::int32_t g = calendar_.guess_next(i); g >= 0) {
+      __builtin_prefetch(&part_[g]);
+      __builtin_prefetch(&ev_[g]);
+      __builtin_prefetch(&cell_xyz_[g]);
+      calendar_.prefetch(g);
+    }
     if (events_ >= event_limit) return Outcome::paused;
     if (t != now_)
       stalled_events_ = 0;
@@ -702,6 +709,7 @@ template <int D>
                                                        std::int32_t& partner) const {
   double b = best;
   std::int32_t p = partner;
+  for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
   for (std::int32_t k = 0; k < count; ++k) {
     const std::int32_t j = list[k];
     const double t = pair_time(i, j);

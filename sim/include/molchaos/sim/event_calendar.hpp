@@ -83,6 +83,27 @@ class EventCalendar {
     }
   }
 
+  /// A guess of the event after top()'s particle `first` (for prefetching its data): another event
+  /// of the current bucket, else the first of the next occupied bucket nearby; -1 if none found.
+  std::int32_t guess_next(std::int32_t first) const {
+    const std::int64_t slot = current_ & mask_;
+    const std::int32_t k = head_[static_cast<std::size_t>(slot)];
+    if (k != first) return k;
+    if (e_[k].next >= 0) return e_[k].next;
+    const std::int64_t words = buckets_ / 64;
+    std::int64_t w = slot >> 6;
+    std::uint64_t bits =
+        occupied_[static_cast<std::size_t>(w)] & ((~std::uint64_t{0} << (slot & 63)) << 1);
+    if (bits == 0) {
+      w = (w + 1) & (words - 1);
+      bits = occupied_[static_cast<std::size_t>(w)];
+      if (bits == 0) return -1;
+    }
+    return head_[static_cast<std::size_t>(w * 64 + __builtin_ctzll(bits))];
+  }
+
+  void prefetch(std::int32_t i) const { __builtin_prefetch(&e_[static_cast<std::size_t>(i)]); }
+
   std::size_t memory_bytes() const {
     return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t) +
            occupied_.capacity() * sizeof(std::uint64_t);
