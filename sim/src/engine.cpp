@@ -823,23 +823,47 @@ void Engine<D>::grow_neighbour_lists() {
 template <int D>
 void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
   const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
+  const double cutoff2 = cutoff * cutoff;
   int stencil[stencil_size<D>()];
-  neighbour_cells<D>(cell_xyz_[i].data(), cells_per_side_, stencil);
-  for (int s = 0; s < stencil_size<D>(); ++s)
-    for (const std::int32_t j : cell_members(stencil[s])) {
-      if (j == i || (only_higher && j < i)) continue;
-      double d2 = 0;
-      for (int a = 0; a < D; ++a) {
-        double d = center_[D * i + a] - center_[D * j + a];
-        if (d > half_box_) d -= box_;
-        if (d < -half_box_) d += box_;
-        d2 += d * d;
-      }
-      if (d2 < cutoff * cutoff) {
-        add_neighbour(i, j);
-        add_neighbour(j, i);
-      }
+  const int* x = cell_xyz_[i].data();
+  bool interior = true;
+  for (int a = 0; a < D; ++a)
+    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
+  if (interior) {
+    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
+  } else {
+    neighbour_cells<D>(x, cells_per_side_, stencil);
+  }
+  const std::int32_t count = gather(stencil, stencil_size<D>());
+  std::int32_t* cand = candidates_.data();
+  for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
+  // Branch-free filter (about one candidate in six is a neighbour): the neighbours are compacted
+  // to the front of the candidates, in candidate order.
+  const double* ci = &center_[D * i];
+  std::int32_t found = 0;
+  for (std::int32_t k = 0; k < count; ++k) {
+    const std::int32_t j = cand[k];
+    double d2 = 0;
+    for (int a = 0; a < D; ++a) {
+      double d = ci[a] - center_[D * j + a];
+      d -= d > half_box_ ? box_ : 0.0;
+      d += d < -half_box_ ? box_ : 0.0;
+      d2 += d * d;
     }
+    cand[found] = j;
+    found += static_cast<int>((d2 < cutoff2) & (j != i) & (!only_higher | (j > i)));
+  }
+  for (std::int32_t k = 0; k < found; ++k) {
+    const std::int32_t j = cand[k];
+    __builtin_prefetch(&nl_count_[j]);
+    const std::int32_t* list = nl_.data() + static_cast<std::size_t>(j) * nl_capacity_;
+    __builtin_prefetch(list);
+    __builtin_prefetch(list + 16);
+  }
+  for (std::int32_t k = 0; k < found; ++k) {
+    add_neighbour(i, cand[k]);
+    add_neighbour(cand[k], i);
+  }
 }
 
 template <int D>
@@ -851,7 +875,14 @@ void Engine<D>::rebuild_neighbours(std::int32_t i) {
     if (x >= box_) x -= box_;
     center_[D * i + a] = x;
   }
-  for (const std::int32_t k : neighbours(i)) remove_neighbour(k, i);
+  const auto old = neighbours(i);
+  for (const std::int32_t k : old) {  // their lists, where i is struck out
+    const std::int32_t* list = nl_.data() + static_cast<std::size_t>(k) * nl_capacity_;
+    __builtin_prefetch(list);
+    __builtin_prefetch(list + 16);
+    __builtin_prefetch(&nl_count_[k]);
+  }
+  for (const std::int32_t k : old) remove_neighbour(k, i);
   nl_count_[i] = 0;
   cell_remove(i);
   cell_insert(i, cell_of_position(part_[i].r));
