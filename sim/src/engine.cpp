@@ -592,7 +592,7 @@ void Engine<D>::request_stop(std::string reason) {
 // Prediction.
 
 template <int D>
-void Engine<D>::advance_particle(std::int32_t i) {
+[[gnu::always_inline]] inline void Engine<D>::advance_particle(std::int32_t i) {
   const double dt = now_ - part_[i].t;
   if (dt != 0) {
     for (int a = 0; a < D; ++a) part_[i].r[a] += part_[i].v[a] * dt;
