@@ -106,8 +106,10 @@ class Engine {
   void collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle);
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
-  void predict_slab(std::int32_t i, int axis, int direction);
   double pair_time(std::int32_t i, std::int32_t j) const;
+  std::int32_t gather(const int* cells, int count);
+  void earliest(std::int32_t i, const std::int32_t* list, std::int32_t count, double& best,
+                std::int32_t& partner) const;
   void crossing(std::int32_t i);
   void shell_exit(std::int32_t i);
   void rebuild_neighbours(std::int32_t i);
@@ -125,6 +127,7 @@ class Engine {
   void build_cells();
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
+  void cell_insert(std::int32_t i, int c, const int* x);
   void cell_remove(std::int32_t i);
   void grow_cells();
   void position_now(std::int32_t i, double* r) const;
@@ -138,6 +141,11 @@ class Engine {
   int cells_per_side_ = 0;
   double cell_width_ = 0;
   std::array<int, D == 2 ? 9 : 27> stencil_offset_{};  // neighbour cells of an interior cell
+  // The cells entering the stencil of an interior cell entered along axis a, upwards (u = 1) or
+  // downwards (u = 0): slab_offset_[2 a + u].
+  std::array<std::array<int, D == 2 ? 3 : 9>, 2 * D> slab_offset_{};
+  std::array<int, D> stride_{};  // cell index change per step along each axis
+  std::vector<double> wall_;     // cell walls: k * cell_width_, and box_ for the last one
 
   // The record a pair prediction reads about the partner, one per particle (48 bytes for d = 2,
   // one 64-byte cache line for d = 3): an array of small structs rather than separate arrays,
@@ -168,6 +176,7 @@ class Engine {
   std::vector<std::int32_t> slots_, count_;
   std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
   int capacity_ = 0;
+  std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
   std::span<const std::int32_t> cell_members(int c) const {
     return {slots_.data() + static_cast<std::size_t>(c) * capacity_,
             static_cast<std::size_t>(count_[c])};

@@ -2,9 +2,11 @@
 // A calendar queue (Brown 1988; as used by Smallenburg, arXiv 2201.01100): time is cut into
 // buckets of width `bucket_width`; the buckets of the current cycle [cycle_start, cycle_start +
 // buckets) hold doubly linked lists of particles, later events wait in an overflow list that is
-// re-filed when a new cycle starts, and the events of the current bucket sit in a small binary
-// heap from which the earliest is taken. The bucket width is chosen so that a bucket holds about
-// one event, so the heap stays tiny whatever N.
+// re-filed when a new cycle starts. Events due in the current bucket or earlier are linked into
+// the current bucket, whose list is scanned for the earliest event; a bitmap of occupied buckets
+// leads to the next non-empty bucket without a walk over the empty ones. The bucket width is chosen
+// so that a bucket holds about one event, so the scan is short whatever N (a scan is cheaper
+// than keeping the current bucket in a heap: measured, instruction counts).
 #pragma once
 
 #include <algorithm>
@@ -24,12 +26,12 @@ class EventCalendar {
     origin_ = origin;
     width_ = bucket_width;
     inv_width_ = 1.0 / bucket_width;
-    buckets_ = 1;
+    buckets_ = 64;
     while (buckets_ < buckets) buckets_ *= 2;
     mask_ = buckets_ - 1;
     e_.assign(static_cast<std::size_t>(n), Entry{});
     head_.assign(static_cast<std::size_t>(buckets_), -1);
-    heap_.clear();
+    occupied_.assign(static_cast<std::size_t>(buckets_ / 64), 0);
     overflow_ = -1;
     current_ = 0;
     cycle_start_ = 0;
@@ -46,42 +48,86 @@ class EventCalendar {
     insert(i);
   }
 
-  /// The earliest event: (time, particle); time is +inf when no event is finite.
+  /// The earliest event: (time, particle); time is +inf when no event is finite. Among events at
+  /// the same time, the first in the current bucket's list (deterministic).
   std::pair<double, std::int32_t> top() {
-    while (heap_.empty()) {
+    for (;;) {
+      std::int32_t k = head_[static_cast<std::size_t>(current_ & mask_)];
+      if (k >= 0) {
+        std::int32_t best = k;
+        double t = e_[k].time;
+        for (k = e_[k].next; k >= 0; k = e_[k].next)
+          if (e_[k].time < t) {
+            t = e_[k].time;
+            best = k;
+          }
+        return {t, best};
+      }
       if (filed_ == 0) {
         if (!jump_to_overflow()) return {k_inf, 0};
         continue;
       }
-      ++current_;
-      if (current_ == cycle_start_ + buckets_) new_cycle();
-      load_bucket();
+      // On to the next occupied bucket. The filed events lie in buckets [current_, cycle_start_ +
+      // buckets_), whose slots follow the current slot cyclically, so the cyclically next set bit
+      // is the earliest of them (and the cycle does not end before it).
+      const std::int64_t slot = current_ & mask_;
+      const std::int64_t words = buckets_ / 64;
+      std::int64_t w = slot >> 6;
+      std::uint64_t bits = occupied_[static_cast<std::size_t>(w)] & (~std::uint64_t{0} << (slot & 63));
+      while (bits == 0) {
+        w = (w + 1) & (words - 1);
+        bits = occupied_[static_cast<std::size_t>(w)];
+      }
+      const std::int64_t next = w * 64 + __builtin_ctzll(bits);
+      current_ += (next - slot) & mask_;
     }
-    return {e_[heap_[0]].time, heap_[0]};
   }
 
+  /// A guess of the event after top()'s particle `first` (for prefetching its data): another event
+  /// of the current bucket, else the first of the next occupied bucket nearby; -1 if none found.
+  std::int32_t guess_next(std::int32_t first) const {
+    const std::int64_t slot = current_ & mask_;
+    const std::int32_t k = head_[static_cast<std::size_t>(slot)];
+    if (k != first) return k;
+    if (e_[k].next >= 0) return e_[k].next;
+    const std::int64_t words = buckets_ / 64;
+    std::int64_t w = slot >> 6;
+    std::uint64_t bits =
+        occupied_[static_cast<std::size_t>(w)] & ((~std::uint64_t{0} << (slot & 63)) << 1);
+    if (bits == 0) {
+      w = (w + 1) & (words - 1);
+      bits = occupied_[static_cast<std::size_t>(w)];
+      if (bits == 0) return -1;
+    }
+    return head_[static_cast<std::size_t>(w * 64 + __builtin_ctzll(bits))];
+  }
+
+  void prefetch(std::int32_t i) const { __builtin_prefetch(&e_[static_cast<std::size_t>(i)]); }
+
   std::size_t memory_bytes() const {
-    return e_.capacity() * sizeof(Entry) +
-           (head_.capacity() + heap_.capacity()) * sizeof(std::int32_t);
+    return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t) +
+           occupied_.capacity() * sizeof(std::uint64_t);
   }
 
  private:
   static constexpr double k_inf = std::numeric_limits<double>::infinity();
-  static constexpr std::int32_t k_absent = -3, k_in_heap = -2, k_in_overflow = -1;
+  static constexpr std::int32_t k_absent = -2, k_in_overflow = -1;
 
-  // Absolute bucket number of time t (saturating for far or infinite times).
+  // Absolute bucket number of time t (saturating for far or infinite times). Truncation instead of
+  // floor (no SSE4.1 round on baseline x86-64, floor is a long sequence): the two differ only
+  // for t < origin_, where both give a bucket <= current_ (the current bucket), as they must.
   std::int64_t bucket_of(double t) const {
-    const double b = std::floor((t - origin_) * inv_width_);
+    const double b = (t - origin_) * inv_width_;
     if (!(b < 4e18)) return std::numeric_limits<std::int64_t>::max();
     return static_cast<std::int64_t>(b);
   }
 
   void insert(std::int32_t i) {
     const std::int64_t b = bucket_of(e_[i].time);
-    if (b <= current_) {
-      heap_push(i);
-    } else if (b < cycle_start_ + buckets_) {
-      link(i, static_cast<std::int32_t>(b & mask_), head_[static_cast<std::size_t>(b & mask_)]);
+    if (b < cycle_start_ + buckets_) {
+      const std::int64_t slot = std::max(b, current_) & mask_;
+      link(i, static_cast<std::int32_t>(slot), head_[static_cast<std::size_t>(slot)]);
+      occupied_[static_cast<std::size_t>(slot) >> 6] |= std::uint64_t{1} << (slot & 63);
       ++filed_;
     } else {
       link(i, k_in_overflow, overflow_);
@@ -91,19 +137,17 @@ class EventCalendar {
   void remove(std::int32_t i) {
     const std::int32_t w = e_[i].where;
     if (w == k_absent) return;
-    if (w == k_in_heap) {
-      heap_erase(i);
+    const std::int32_t p = e_[i].prev, q = e_[i].next;
+    if (p >= 0) {
+      e_[p].next = q;
+    } else if (w == k_in_overflow) {
+      overflow_ = q;
     } else {
-      const std::int32_t p = e_[i].prev, q = e_[i].next;
-      if (p >= 0)
-        e_[p].next = q;
-      else if (w == k_in_overflow)
-        overflow_ = q;
-      else
-        head_[static_cast<std::size_t>(w)] = q;
-      if (q >= 0) e_[q].prev = p;
-      if (w != k_in_overflow) --filed_;
+      head_[static_cast<std::size_t>(w)] = q;
+      if (q < 0) occupied_[static_cast<std::size_t>(w) >> 6] &= ~(std::uint64_t{1} << (w & 63));
     }
+    if (q >= 0) e_[q].prev = p;
+    if (w != k_in_overflow) --filed_;
     e_[i].where = k_absent;
   }
 
@@ -113,17 +157,6 @@ class EventCalendar {
     e_[i].next = head;
     if (head >= 0) e_[head].prev = i;
     head = i;
-  }
-
-  void load_bucket() {
-    std::int32_t& head = head_[static_cast<std::size_t>(current_ & mask_)];
-    for (std::int32_t i = head; i >= 0;) {
-      const std::int32_t following = e_[i].next;
-      --filed_;
-      heap_push(i);
-      i = following;
-    }
-    head = -1;
   }
 
   // A new cycle of buckets starts at current_: re-file the overflow events that now fit.
@@ -152,75 +185,22 @@ class EventCalendar {
       current_ = std::max(current_, b);
     }
     new_cycle();
-    load_bucket();
     return true;
-  }
-
-  void heap_push(std::int32_t i) {
-    e_[i].where = k_in_heap;
-    heap_.push_back(i);
-    sift_up(static_cast<std::int32_t>(heap_.size()) - 1);
-  }
-
-  void heap_erase(std::int32_t i) {
-    const std::int32_t p = e_[i].heap_pos;
-    const std::int32_t last = heap_.back();
-    heap_.pop_back();
-    if (last == i) return;
-    heap_[static_cast<std::size_t>(p)] = last;
-    e_[last].heap_pos = p;
-    sift_up(p);
-    sift_down(e_[last].heap_pos);
-  }
-
-  void sift_up(std::int32_t p) {
-    const std::int32_t i = heap_[static_cast<std::size_t>(p)];
-    const double t = e_[i].time;
-    while (p > 0) {
-      const std::int32_t parent = (p - 1) / 2;
-      const std::int32_t k = heap_[static_cast<std::size_t>(parent)];
-      if (e_[k].time <= t) break;
-      heap_[static_cast<std::size_t>(p)] = k;
-      e_[k].heap_pos = p;
-      p = parent;
-    }
-    heap_[static_cast<std::size_t>(p)] = i;
-    e_[i].heap_pos = p;
-  }
-
-  void sift_down(std::int32_t p) {
-    const std::int32_t size = static_cast<std::int32_t>(heap_.size());
-    const std::int32_t i = heap_[static_cast<std::size_t>(p)];
-    const double t = e_[i].time;
-    for (;;) {
-      std::int32_t child = 2 * p + 1;
-      if (child >= size) break;
-      if (child + 1 < size && e_[heap_[static_cast<std::size_t>(child) + 1]].time <
-                                  e_[heap_[static_cast<std::size_t>(child)]].time)
-        ++child;
-      const std::int32_t k = heap_[static_cast<std::size_t>(child)];
-      if (!(e_[k].time < t)) break;
-      heap_[static_cast<std::size_t>(p)] = k;
-      e_[k].heap_pos = p;
-      p = child;
-    }
-    heap_[static_cast<std::size_t>(p)] = i;
-    e_[i].heap_pos = p;
   }
 
   std::int32_t n_ = 0;
   double origin_ = 0, width_ = 1, inv_width_ = 1;
   std::int64_t buckets_ = 1, mask_ = 0, current_ = 0, cycle_start_ = 0;
-  std::int64_t filed_ = 0;  // events in the buckets (not in heap or overflow)
+  std::int64_t filed_ = 0;  // events in the buckets (not in the overflow)
   // Everything the calendar keeps per particle, in one 24-byte record (one cache miss per event).
   struct Entry {
     double time = k_inf;
-    std::int32_t where = k_absent;      // bucket slot, or k_in_heap / k_in_overflow / k_absent
+    std::int32_t where = k_absent;      // bucket slot, or k_in_overflow / k_absent
     std::int32_t next = -1, prev = -1;  // in the bucket's or the overflow's list
-    std::int32_t heap_pos = -1;
   };
   std::vector<Entry> e_;
-  std::vector<std::int32_t> head_, heap_;
+  std::vector<std::int32_t> head_;
+  std::vector<std::uint64_t> occupied_;  // bit s set: bucket slot s holds events
   std::int32_t overflow_ = -1;
 };
 
