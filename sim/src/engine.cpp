@@ -787,6 +787,27 @@ template <int D>
   ev_[i].cross_axis = axis;
 }
 
+// True when the cell with coordinates x is not on the box boundary: its stencil needs no
+// periodic wrap and is given by fixed index offsets.
+template <int D>
+[[gnu::always_inline]] inline bool Engine<D>::interior_cell(const int* x) const {
+  bool interior = true;
+  for (int a = 0; a < D; ++a)
+    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
+  return interior;
+}
+
+// The 3^D cells around i's cell (i's cell included).
+template <int D>
+[[gnu::always_inline]] inline void Engine<D>::stencil_of(std::int32_t i, int* stencil) const {
+  const int* x = cell_xyz_[i].data();
+  if (interior_cell(x)) {
+    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
+  } else {
+    neighbour_cells<D>(x, cells_per_side_, stencil);
+  }
+}
+
 template <int D>
 void Engine<D>::predict(std::int32_t i) {
   advance_particle(i);
@@ -797,14 +818,7 @@ void Engine<D>::predict(std::int32_t i) {
     earliest(i, list.data(), static_cast<std::int32_t>(list.size()), best, partner);
   } else {
     int stencil[stencil_size<D>()];
-    const int* x = cell_xyz_[i].data();
-    bool interior = true;
-    for (int a = 0; a < D; ++a) interior = interior && x[a] > 0 && x[a] < cells_per_side_ - 1;
-    if (interior) {  // no periodic wrap: fixed offsets
-      for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
-    } else {
-      neighbour_cells<D>(x, cells_per_side_, stencil);
-    }
+    stencil_of(i, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
     const std::int32_t count = gather(stencil, stencil_size<D>());
     earliest(i, candidates_.data(), count, best, partner);
@@ -873,15 +887,7 @@ void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
   const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
   const double cutoff2 = cutoff * cutoff;
   int stencil[stencil_size<D>()];
-  const int* x = cell_xyz_[i].data();
-  bool interior = true;
-  for (int a = 0; a < D; ++a)
-    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
-  if (interior) {
-    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
-  } else {
-    neighbour_cells<D>(x, cells_per_side_, stencil);
-  }
+  stencil_of(i, stencil);
   const std::int32_t count = gather(stencil, stencil_size<D>());
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
@@ -979,31 +985,13 @@ void Engine<D>::cross_cell(std::int32_t i) {
     p.r[axis] = up ? 0.0 : box_;
     step = (up ? -1 : 1) * (cells_per_side_ - 1) * stride_[axis];
   }
-  x[axis] = to;
+  x[axis] = to;  // x is i's cell_xyz_ entry: now the new cell's coordinates
   const int c = old_cell + step;
-  // Out of the old cell (swap-remove: the cell's last member takes i's slot), into the new one.
-  {
-    const std::size_t base = static_cast<std::size_t>(old_cell) * capacity_;
-    const std::int32_t last = slots_[base + --count_[old_cell]];
-    slots_[base + slot_[i]] = last;
-    slot_[last] = slot_[i];
-  }
-  if (count_[c] == capacity_) [[unlikely]] {
-    slot_[i] = -1;
-    grow_cells();
-  }
-  p.cell = c;
-  {
-    const std::int32_t k = count_[c]++;
-    slots_[static_cast<std::size_t>(c) * capacity_ + k] = i;
-    slot_[i] = k;
-  }
+  cell_remove(i);
+  file_in_cell(i, c);
 
   int slab[slab_size<D>()];
-  bool interior = true;
-  for (int a = 0; a < D; ++a)
-    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
-  if (interior) {  // no periodic wrap: fixed offsets
+  if (interior_cell(x)) {  // no periodic wrap: fixed offsets
     const int* offset = slab_offset_[2 * axis + up].data();
     for (int s = 0; s < slab_size<D>(); ++s) slab[s] = c + offset[s];
   } else {
@@ -1131,17 +1119,16 @@ void Engine<D>::build_cells() {
 
 template <int D>
 void Engine<D>::cell_insert(std::int32_t i, int c) {
-  int x[D];
-  cell_coords<D>(c, cells_per_side_, x);
-  cell_insert(i, c, x);
+  cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
+  file_in_cell(i, c);
 }
 
-// Files i in cell c with coordinates x (no divisions: the hot path knows x).
+// Files i in the slots of cell c; cell_xyz_[i] must already hold c's coordinates (the hot path,
+// a cell crossing, knows them without divisions).
 template <int D>
-void Engine<D>::cell_insert(std::int32_t i, int c, const int* x) {
-  if (count_[c] == capacity_) grow_cells();  // i is not filed now, grow_cells skips it
+[[gnu::always_inline]] inline void Engine<D>::file_in_cell(std::int32_t i, int c) {
+  if (count_[c] == capacity_) [[unlikely]] grow_cells();  // i is not filed now, grow_cells skips it
   part_[i].cell = c;
-  for (int a = 0; a < D; ++a) cell_xyz_[i][a] = x[a];
   const std::int32_t k = count_[c]++;
   slots_[static_cast<std::size_t>(c) * capacity_ + k] = i;
   slot_[i] = k;
@@ -1164,7 +1151,7 @@ void Engine<D>::grow_cells() {
 }
 
 template <int D>
-void Engine<D>::cell_remove(std::int32_t i) {
+[[gnu::always_inline]] inline void Engine<D>::cell_remove(std::int32_t i) {
   // Swap-remove: the cell's last member takes i's slot.
   const int c = part_[i].cell;
   const std::size_t base = static_cast<std::size_t>(c) * capacity_;

@@ -110,6 +110,8 @@ class Engine {
   std::int32_t gather(const int* cells, int count);
   void earliest(std::int32_t i, const std::int32_t* list, std::int32_t count, double& best,
                 std::int32_t& partner) const;
+  bool interior_cell(const int* x) const;
+  void stencil_of(std::int32_t i, int* stencil) const;
   void crossing(std::int32_t i);
   void shell_exit(std::int32_t i);
   void rebuild_neighbours(std::int32_t i);
@@ -127,7 +129,7 @@ class Engine {
   void build_cells();
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
-  void cell_insert(std::int32_t i, int c, const int* x);
+  void file_in_cell(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
   void grow_cells();
   void position_now(std::int32_t i, double* r) const;
