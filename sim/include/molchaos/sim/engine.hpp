@@ -16,6 +16,9 @@
 #include <span>
 #include <string>
 #include <vector>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/event_calendar.hpp"
@@ -107,6 +110,9 @@ class Engine {
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
   double pair_time(std::int32_t i, std::int32_t j) const;
+#if defined(__SSE2__)
+  __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
+#endif
   std::int32_t gather(const int* cells, int count);
   void earliest(std::int32_t i, const std::int32_t* list, std::int32_t count, double& best,
                 std::int32_t& partner) const;
@@ -173,16 +179,26 @@ class Engine {
   };
   std::vector<EventData> ev_;
   std::vector<double> last_collision_time_;  // tau of the particle's last collision
-  // Cell lists as fixed-capacity slot arrays: cell c's members are slots_[c * capacity_ + k],
-  // k < count_[c], so a stencil scan reads contiguous indices and independent partner records.
-  std::vector<std::int32_t> slots_, count_;
+  // Cell lists as blocks of capacity_ + 1 ints (a multiple of 8, each block 32-byte aligned):
+  // block[0] is the member count, block[1 .. count] the members. The count shares the members'
+  // cache line, and a stencil scan reads contiguous indices and independent partner records.
+  std::vector<std::int32_t> slots_;
+  std::size_t slots_origin_ = 0;  // index in slots_ of cell 0's block (32-byte aligned)
+  std::size_t cells_ = 0;         // number of cells
   std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
-  int capacity_ = 0;
+  int capacity_ = 0;              // members per block
   std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
-  std::span<const std::int32_t> cell_members(int c) const {
-    return {slots_.data() + static_cast<std::size_t>(c) * capacity_,
-            static_cast<std::size_t>(count_[c])};
+  std::int32_t* cell_block(int c) {
+    return slots_.data() + slots_origin_ + static_cast<std::size_t>(c) * (capacity_ + 1);
   }
+  const std::int32_t* cell_block(int c) const {
+    return slots_.data() + slots_origin_ + static_cast<std::size_t>(c) * (capacity_ + 1);
+  }
+  std::span<const std::int32_t> cell_members(int c) const {
+    const std::int32_t* block = cell_block(c);
+    return {block + 1, static_cast<std::size_t>(block[0])};
+  }
+  void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
   std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
   // Neighbour lists (dense spheres only): shell centres, lists of nl_capacity_ slots each.
@@ -198,6 +214,7 @@ class Engine {
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
+  bool prefetch_ = true;  // software prefetches pay only when the data outgrow the cache
 
   // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.
   double now_ = 0, t_offset_ = 0, theta_ = 1;
