@@ -13,7 +13,7 @@ PACKAGES := cmake g++ make git pkg-config ca-certificates \
             libgsl-dev libeigen3-dev libboost-test-dev libboost-iostreams-dev \
             libboost-filesystem-dev libboost-system-dev libgnuplot-iostream-dev gnuplot-nox \
             libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev \
-            libopenmpi-dev openmpi-bin
+            libopenmpi-dev openmpi-bin valgrind
 
 .PHONY: all deps configure build build-app test test-all reproduce bench clean format
 
@@ -59,6 +59,8 @@ bench: build
 	@for b in $(BUILD)/bench/bench_*; do [ -x "$$b" ] || continue; echo "== $$b"; \
 	  "$$b" --benchmark_out=$(RESULTS)/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; done
 	$(BUILD)/molchaos bench --theory --simulation --out $(RESULTS)/bench
+	@echo "== engine work per collision (callgrind counts, load-independent; about 5 minutes)"
+	bench/engine_counts.sh $(BUILD) | tee $(RESULTS)/bench/engine_counts.txt
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')

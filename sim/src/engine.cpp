@@ -656,56 +656,12 @@ void Engine<D>::position_now(std::int32_t i, double* r) const {
 }
 
 // Time of contact of i (at now_) and j (at its local time), or +inf: the smaller root of
-// |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)).
-//
-// With SSE2 the whole computation is branch-free (the approach test b < 0 and the discriminant
-// test are coin flips for the branch predictor): the root is computed for every pair and replaced
-// by +inf unless b < 0 and disc >= 0. The arithmetic is the scalar code's, operation for
-// operation (the x and y components side by side in one register); the periodic wrap adds or
-// subtracts a masked box length instead of branching, which can only change the sign of a zero
-// component. collide() recomputes b with the scalar loop; the two can then differ at most in the
-// sign of a zero b, which both treat as "not approaching".
+// |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)). The reference
+// arithmetic; with SSE2 the engine uses pair_times() below, which does the same operations.
 template <int D>
 [[gnu::always_inline]] inline double Engine<D>::pair_time(std::int32_t i, std::int32_t j) const {
   const Particle& pi = part_[i];
   const Particle& pj = part_[j];
-#if defined(__SSE2__)
-  const __m128d zero = _mm_setzero_pd();
-  const __m128d now = _mm_set1_pd(now_);
-  const __m128d dtj = _mm_sub_pd(now, _mm_set1_pd(pj.t));
-  const __m128d half = _mm_set1_pd(half_box_), minus_half = _mm_set1_pd(-half_box_);
-  const __m128d box = _mm_set1_pd(box_);
-  // x, y: d = r_i - (r_j + v_j dtj), nearest image; dv = v_i - v_j.
-  __m128d d = _mm_sub_pd(_mm_loadu_pd(pi.r),
-                         _mm_add_pd(_mm_loadu_pd(pj.r), _mm_mul_pd(_mm_loadu_pd(pj.v), dtj)));
-  d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
-  d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
-  const __m128d dv = _mm_sub_pd(_mm_loadu_pd(pi.v), _mm_loadu_pd(pj.v));
-  __m128d pb = _mm_mul_pd(d, dv), pr = _mm_mul_pd(d, d), pv = _mm_mul_pd(dv, dv);
-  // Sums in the scalar order (x + y) + z (the scalar code's leading 0 + x is exact but for the
-  // sign of a zero b).
-  __m128d b = _mm_add_sd(pb, _mm_unpackhi_pd(pb, pb));
-  __m128d dr2 = _mm_add_sd(pr, _mm_unpackhi_pd(pr, pr));
-  __m128d dv2 = _mm_add_sd(pv, _mm_unpackhi_pd(pv, pv));
-  if constexpr (D == 3) {
-    __m128d z = _mm_sub_sd(_mm_load_sd(&pi.r[2]),
-                           _mm_add_sd(_mm_load_sd(&pj.r[2]), _mm_mul_sd(_mm_load_sd(&pj.v[2]), dtj)));
-    z = _mm_sub_sd(z, _mm_and_pd(_mm_cmpgt_sd(z, half), box));
-    z = _mm_add_sd(z, _mm_and_pd(_mm_cmplt_sd(z, minus_half), box));
-    const __m128d w = _mm_sub_sd(_mm_load_sd(&pi.v[2]), _mm_load_sd(&pj.v[2]));
-    b = _mm_add_sd(b, _mm_mul_sd(z, w));
-    dr2 = _mm_add_sd(dr2, _mm_mul_sd(z, z));
-    dv2 = _mm_add_sd(dv2, _mm_mul_sd(w, w));
-  }
-  const __m128d c = _mm_sub_sd(dr2, _mm_set_sd(1.0));
-  const __m128d disc = _mm_sub_sd(_mm_mul_sd(b, b), _mm_mul_sd(dv2, c));
-  const __m128d root = _mm_sqrt_sd(zero, _mm_max_sd(disc, zero));
-  const __m128d dt = _mm_div_sd(c, _mm_sub_sd(root, b));        // c / (-b + sqrt(disc))
-  const __m128d t = _mm_add_sd(now, _mm_max_sd(dt, zero));       // dt > 0 ? now + dt : now
-  const __m128d valid = _mm_and_pd(_mm_cmplt_sd(b, zero), _mm_cmpge_sd(disc, zero));
-  return _mm_cvtsd_f64(
-      _mm_or_pd(_mm_and_pd(valid, t), _mm_andnot_pd(valid, _mm_set_sd(k_inf))));
-#else
   const double dtj = now_ - pj.t;
   double b = 0, dr2 = 0, dv2 = 0;
   for (int a = 0; a < D; ++a) {
@@ -723,14 +679,17 @@ template <int D>
   if (disc < 0) return k_inf;
   const double dt = c / (-b + std::sqrt(disc));
   return dt > 0 ? now_ + dt : now_;  // c < 0: overlapping by rounding and approaching: now
-#endif
 }
 
 #if defined(__SSE2__)
 // pair_time() for two partners at once: (time with j1, time with j2). Each half of the registers
-// does exactly the scalar operations of pair_time() in the same order, so the times are the same
-// bit for bit; the components of the two partners are regrouped (x1 x2), (y1 y2), (z1 z2) so that
-// the sums and the root are shared instead of done one partner at a time.
+// does pair_time()'s operations in the same order; the components of the two partners are
+// regrouped (x1 x2), (y1 y2), (z1 z2) so that the sums and the root are shared. Branch-free (the
+// approach test b < 0 and the discriminant test are coin flips for the branch predictor): the
+// root is computed for every pair and replaced by +inf unless b < 0 and disc >= 0; the periodic
+// wrap adds or subtracts a masked box length instead of branching, which can only change the sign
+// of a zero component. collide() recomputes b with the scalar loop; the two can then differ at
+// most in the sign of a zero b, which both treat as "not approaching".
 template <int D>
 [[gnu::always_inline]] inline __m128d Engine<D>::pair_times(std::int32_t i, std::int32_t j1,
                                                             std::int32_t j2) const {
@@ -770,23 +729,25 @@ template <int D>
 }
 #endif
 
-// The members of the given cells, gathered into candidates_: each cell's slot block is copied
-// whole (a trip count the branch predictor knows) and the write position advanced by the
+// The members of the Count given cells, gathered into candidates_: each cell's slot block is
+// copied whole (fixed-size copies, unrolled: no branch) and the write position advanced by the
 // member count. Returns the number of candidates.
 template <int D>
-[[gnu::always_inline]] inline std::int32_t Engine<D>::gather(const int* cells, int count) {
+template <int Count>
+[[gnu::always_inline]] inline std::int32_t Engine<D>::gather(const int* cells) {
   std::int32_t* out = candidates_.data();
   const std::int32_t* blocks = slots_.data() + slots_origin_;
   const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
   std::int32_t k = 0;
   if (capacity_ <= k_gather_block) {  // fixed-size copies (slots_ is padded for the last cell)
-    for (int s = 0; s < count; ++s) {
+#pragma GCC unroll 27
+    for (int s = 0; s < Count; ++s) {  // unrolled: no loop branch to mispredict
       const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
       std::memcpy(out + k, block + 1, k_gather_block * sizeof(std::int32_t));
       k += block[0];
     }
   } else {  // crowded cells (clusters): copy the members only
-    for (int s = 0; s < count; ++s) {
+    for (int s = 0; s < Count; ++s) {
       const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
       const std::int32_t members = block[0];
       for (int m = 0; m < members; ++m) out[k + m] = block[1 + m];
@@ -798,17 +759,20 @@ template <int D>
 
 // The earliest collision of i (at now_) with the listed candidates after `best`: updates best and
 // partner. Branch-free selection; candidates in list order, the first of equal times wins.
+// list[count] must be writable: an odd list is padded there with i itself (its pair time with
+// itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
+// the branch predictor would have to guess.
 template <int D>
-[[gnu::always_inline]] inline void Engine<D>::earliest(std::int32_t i, const std::int32_t* list,
+[[gnu::always_inline]] inline void Engine<D>::earliest(std::int32_t i, std::int32_t* list,
                                                        std::int32_t count, double& best,
                                                        std::int32_t& partner) const {
   double b = best;
   std::int32_t p = partner;
   if (prefetch_)
     for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
-  std::int32_t k = 0;
 #if defined(__SSE2__)
-  for (; k + 1 < count; k += 2) {  // two partners per pass, one in each half of the registers
+  list[count] = i;
+  for (std::int32_t k = 0; k < count; k += 2) {  // two partners per pass, one in each half
     const std::int32_t j1 = list[k], j2 = list[k + 1];
     double t[2];
     _mm_storeu_pd(t, pair_times(i, j1, j2));
@@ -817,13 +781,14 @@ template <int D>
     p = t[1] < b ? j2 : p;
     b = t[1] < b ? t[1] : b;
   }
-#endif
-  for (; k < count; ++k) {
+#else
+  for (std::int32_t k = 0; k < count; ++k) {
     const std::int32_t j = list[k];
     const double t = pair_time(i, j);
     p = t < b ? j : p;
     b = t < b ? t : b;
   }
+#endif
   best = b;
   partner = p;
 }
@@ -875,18 +840,19 @@ void Engine<D>::predict(std::int32_t i) {
   double best = k_inf;
   std::int32_t partner = -1;
   if (neighbour_lists_) {
-    const auto list = neighbours(i);
-    earliest(i, list.data(), static_cast<std::int32_t>(list.size()), best, partner);
+    earliest(i, nl_.data() + static_cast<std::size_t>(i) * nl_capacity_, nl_count_[i], best,
+             partner);
   } else {
     int stencil[stencil_size<D>()];
     stencil_of(i, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
-    const std::int32_t count = gather(stencil, stencil_size<D>());
+    const std::int32_t count = gather<stencil_size<D>()>(stencil);
     earliest(i, candidates_.data(), count, best, partner);
   }
   ev(i).coll_time = best;
   ev(i).partner = partner;
-  ev(i).partner_counter = partner >= 0 ? part_[partner].counter : 0;
+  // Without a partner (-1) the counter is never read: particle 0's is taken (no branch).
+  ev(i).partner_counter = part_[std::max(partner, 0)].counter;
   if (neighbour_lists_)
     shell_exit(i);
   else
@@ -915,7 +881,7 @@ void Engine<D>::shell_exit(std::int32_t i) {
 
 template <int D>
 void Engine<D>::add_neighbour(std::int32_t i, std::int32_t j) {
-  if (nl_count_[i] == nl_capacity_) grow_neighbour_lists();
+  if (nl_count_[i] + 1 >= nl_capacity_) grow_neighbour_lists();  // a spare slot for earliest()
   nl_[static_cast<std::size_t>(i) * nl_capacity_ + nl_count_[i]++] = j;
 }
 
@@ -949,7 +915,7 @@ void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
   const double cutoff2 = cutoff * cutoff;
   int stencil[stencil_size<D>()];
   stencil_of(i, stencil);
-  const std::int32_t count = gather(stencil, stencil_size<D>());
+  const std::int32_t count = gather<stencil_size<D>()>(stencil);
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
   // Branch-free filter (about one candidate in six is a neighbour): the neighbours are compacted
@@ -1060,14 +1026,17 @@ void Engine<D>::cross_cell(std::int32_t i) {
   }
   double best = ev(i).coll_time;
   std::int32_t partner = -1;
-  const std::int32_t count = gather(slab, slab_size<D>());
+  const std::int32_t count = gather<slab_size<D>()>(slab);
   earliest(i, candidates_.data(), count, best, partner);
   // best is the old collision time unless a new partner was found (selects, no branch).
   ev(i).coll_time = best;
-  const bool found = partner >= 0;
-  const std::uint32_t counter = part_[found ? partner : i].counter;
-  ev(i).partner = found ? partner : ev(i).partner;
-  ev(i).partner_counter = found ? counter : ev(i).partner_counter;
+  // Masks instead of selects, which the compiler turned into (mispredicted) branches.
+  EventData& e = ev(i);
+  const std::uint32_t keep = static_cast<std::uint32_t>(partner >> 31);  // ones: none found
+  const std::uint32_t counter = part_[std::max(partner, 0)].counter;
+  e.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(partner) & ~keep) |
+                                        (static_cast<std::uint32_t>(e.partner) & keep));
+  e.partner_counter = (counter & ~keep) | (e.partner_counter & keep);
   crossing(i);
   calendar_.update(i, earlier_of(best, ev(i).cross_time));
 }

@@ -114,8 +114,9 @@ class Engine {
 #if defined(__SSE2__)
   __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
 #endif
-  std::int32_t gather(const int* cells, int count);
-  void earliest(std::int32_t i, const std::int32_t* list, std::int32_t count, double& best,
+  template <int Count>
+  std::int32_t gather(const int* cells);
+  void earliest(std::int32_t i, std::int32_t* list, std::int32_t count, double& best,
                 std::int32_t& partner) const;
   template <class C>
   bool interior_cell(const C* x) const;
