@@ -42,8 +42,9 @@ constexpr double k_overlap_tolerance = 1e-10;
 // engine's data outgrow a core's L2 cache (2 MB here); below, they are extra instructions
 // (8 % of them for the paper's case, N = 5000, 1 MB).
 constexpr std::size_t k_prefetch_min_bytes = std::size_t{2} << 20;
-// Cells with at most this many slots are gathered by fixed-size copies (see gather()).
-constexpr int k_gather_block = 8;
+// Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
+// gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
+constexpr int k_gather_block = 16;
 // Dense spheres use neighbour lists instead of cell crossings (Smallenburg's scheme): a particle
 // lists every particle whose shell centre lies within sigma + 2 * shell of its own, and gets a
 // bookkeeping event when it leaves its shell of radius `shell` around its centre.
@@ -739,13 +740,20 @@ template <int Count>
   const std::int32_t* blocks = slots_.data() + slots_origin_;
   const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
   std::int32_t k = 0;
-  if (capacity_ <= k_gather_block) {  // fixed-size copies (slots_ is padded for the last cell)
+  // Fixed-size copies of whole blocks, unrolled (slots_ and candidates_ are padded for them): no
+  // branch on the member counts, which are coin flips for the branch predictor.
+  auto copy_blocks = [&]<int Block>() {
 #pragma GCC unroll 27
-    for (int s = 0; s < Count; ++s) {  // unrolled: no loop branch to mispredict
+    for (int s = 0; s < Count; ++s) {
       const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
-      std::memcpy(out + k, block + 1, k_gather_block * sizeof(std::int32_t));
+      std::memcpy(out + k, block + 1, Block * sizeof(std::int32_t));
       k += block[0];
     }
+  };
+  if (capacity_ <= 8) {
+    copy_blocks.template operator()<8>();
+  } else if (capacity_ <= k_gather_block) {
+    copy_blocks.template operator()<k_gather_block>();
   } else {  // crowded cells (clusters): copy the members only
     for (int s = 0; s < Count; ++s) {
       const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
