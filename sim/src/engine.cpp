@@ -63,10 +63,10 @@ constexpr int slab_size() {
   return D == 2 ? 3 : 9;
 }
 
-template <int D, class C>
-void cell_coords(int c, int cps, C* x) {
+template <int D>
+void cell_coords(int c, int cps, int* x) {
   for (int a = 0; a < D; ++a) {
-    x[a] = static_cast<C>(c % cps);
+    x[a] = c % cps;
     c /= cps;
   }
 }
@@ -90,8 +90,8 @@ int cell_index(const int* x, int cps) {
 inline int wrap(int x, int cps) { return x < 0 ? x + cps : (x >= cps ? x - cps : x); }
 
 // The 3^D cells around c (periodic), c included.
-template <int D, class C>
-void neighbour_cells(const C* x, int cps, int* out) {
+template <int D>
+void neighbour_cells(const int* x, int cps, int* out) {
   int k = 0;
   if constexpr (D == 2) {
     for (int dy = -1; dy <= 1; ++dy)
@@ -111,8 +111,8 @@ void neighbour_cells(const C* x, int cps, int* out) {
 
 // The 3^(D-1) cells that enter the stencil when a particle moves into cell c along `axis` in
 // direction `dir`: the layer at offset dir along axis.
-template <int D, class C>
-int slab_cells(const C* coords, int cps, int axis, int dir, int* out) {
+template <int D>
+int slab_cells(const int* coords, int cps, int axis, int dir, int* out) {
   int x[D];
   for (int a = 0; a < D; ++a) x[a] = coords[a];
   x[axis] = wrap(x[axis] + dir, cps);
@@ -159,9 +159,6 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
           ? 1.0 + 2.0 * shell_
           : std::max(1.0, std::pow(k_cell_occupancy<D> / p.density, 1.0 / static_cast<double>(D)));
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
-  // Cell coordinates are stored in Coord (16 bits in d = 3, where N <= 1e8 gives at most ~630
-  // cells per side): wider cells beyond that are merely slower, never wrong.
-  cells_per_side_ = std::min(cells_per_side_, int{std::numeric_limits<Coord>::max()});
   if (!neighbour_lists_)
     cells_per_side_ = std::max(cells_per_side_, std::min(4, static_cast<int>(std::floor(box_))));
   // Cells: two particles in neighbouring cells are less than two cell widths apart along each
@@ -202,10 +199,12 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
 
   const std::size_t n = static_cast<std::size_t>(n_);
   part_.assign(n, Particle{});
+  cell_xyz_.resize(n);
   id_.resize(n);
   for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  calendar_.allocate(n_);
+  ev_.assign(n, EventData{});
   last_collision_time_.assign(n, -k_inf);
+  slot_.assign(n, -1);
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
   cells_ = cells;
@@ -459,6 +458,8 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
     // Likely the next event's particle: its records load while this event is processed.
     if (const std::int32_t g = prefetch_ ? calendar_.guess_next(i) : -1; g >= 0) {
       __builtin_prefetch(&part_[g]);
+      __builtin_prefetch(&ev_[g]);
+      __builtin_prefetch(&cell_xyz_[g]);
       calendar_.prefetch(g);
     }
     if (events_ >= event_limit) return Outcome::paused;
@@ -472,14 +473,14 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
     }
     now_ = t;
     ++events_;
-    if (ev(i).cross_time < ev(i).coll_time) {
+    if (ev_[i].cross_time < ev_[i].coll_time) {
       if (neighbour_lists_)
         rebuild_neighbours(i);  // left its shell: new centre, new neighbour list
       else
         cross_cell(i);  // moves i to its next cell, looks at the cells that came into range
     } else {
-      const std::int32_t j = ev(i).partner;
-      if (part_[j].counter != ev(i).partner_counter) {  // partner's velocity changed since: stale
+      const std::int32_t j = ev_[i].partner;
+      if (part_[j].counter != ev_[i].partner_counter) {  // partner's velocity changed since: stale
         predict(i);
         continue;
       }
@@ -803,7 +804,7 @@ template <int D>
 
 template <int D>
 [[gnu::always_inline]] inline void Engine<D>::crossing(std::int32_t i) {
-  const Coord* x = ev(i).xyz.data();
+  const int* x = cell_xyz_[i].data();
   const Particle& p = part_[i];
   double best = k_inf;
   int axis = 0;
@@ -816,15 +817,14 @@ template <int D>
     axis += earlier * (a - axis);
     best = earlier_of(best, dt);
   }
-  ev(i).cross_time = now_ + std::max(best, 0.0);
-  ev(i).cross_axis = axis;
+  ev_[i].cross_time = now_ + std::max(best, 0.0);
+  ev_[i].cross_axis = axis;
 }
 
 // True when the cell with coordinates x is not on the box boundary: its stencil needs no
 // periodic wrap and is given by fixed index offsets.
 template <int D>
-template <class C>
-[[gnu::always_inline]] inline bool Engine<D>::interior_cell(const C* x) const {
+[[gnu::always_inline]] inline bool Engine<D>::interior_cell(const int* x) const {
   bool interior = true;
   for (int a = 0; a < D; ++a)
     interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
@@ -834,7 +834,7 @@ template <class C>
 // The 3^D cells around i's cell (i's cell included).
 template <int D>
 [[gnu::always_inline]] inline void Engine<D>::stencil_of(std::int32_t i, int* stencil) const {
-  const Coord* x = ev(i).xyz.data();
+  const int* x = cell_xyz_[i].data();
   if (interior_cell(x)) {
     for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
   } else {
@@ -857,15 +857,15 @@ void Engine<D>::predict(std::int32_t i) {
     const std::int32_t count = gather<stencil_size<D>()>(stencil);
     earliest(i, candidates_.data(), count, best, partner);
   }
-  ev(i).coll_time = best;
-  ev(i).partner = partner;
+  ev_[i].coll_time = best;
+  ev_[i].partner = partner;
   // Without a partner (-1) the counter is never read: particle 0's is taken (no branch).
-  ev(i).partner_counter = part_[std::max(partner, 0)].counter;
+  ev_[i].partner_counter = part_[std::max(partner, 0)].counter;
   if (neighbour_lists_)
     shell_exit(i);
   else
     crossing(i);
-  calendar_.update(i, earlier_of(best, ev(i).cross_time));
+  calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
 // Time at which i (at now_) leaves the sphere of radius shell_ around its list centre.
@@ -880,11 +880,11 @@ void Engine<D>::shell_exit(std::int32_t i) {
     c += d * d;
   }
   if (!(a > 0)) {
-    ev(i).cross_time = k_inf;
+    ev_[i].cross_time = k_inf;
     return;
   }
   const double dt = (-b + std::sqrt(std::max(b * b - a * c, 0.0))) / a;
-  ev(i).cross_time = now_ + std::max(dt, 0.0);
+  ev_[i].cross_time = now_ + std::max(dt, 0.0);
 }
 
 template <int D>
@@ -1005,9 +1005,9 @@ template <int D>
 void Engine<D>::cross_cell(std::int32_t i) {
   advance_particle(i);
   Particle& p = part_[i];
-  const int axis = ev(i).cross_axis;
+  const int axis = ev_[i].cross_axis;
   const bool up = p.v[axis] > 0;
-  Coord* x = ev(i).xyz.data();
+  int* x = cell_xyz_[i].data();
   const int old_cell = p.cell;
   // The wall crossed: the old cell's upper wall (up) or lower wall; the wrap is the rare case.
   const int from = x[axis];
@@ -1020,7 +1020,7 @@ void Engine<D>::cross_cell(std::int32_t i) {
     p.r[axis] = up ? 0.0 : box_;
     step = (up ? -1 : 1) * (cells_per_side_ - 1) * stride_[axis];
   }
-  x[axis] = static_cast<Coord>(to);  // x is i's ev(i).xyz: now the new cell's coordinates
+  x[axis] = to;  // x is i's cell_xyz_ entry: now the new cell's coordinates
   const int c = old_cell + step;
   cell_remove(i);
   file_in_cell(i, c);
@@ -1032,21 +1032,21 @@ void Engine<D>::cross_cell(std::int32_t i) {
   } else {
     slab_cells<D>(x, cells_per_side_, axis, up ? 1 : -1, slab);
   }
-  double best = ev(i).coll_time;
+  double best = ev_[i].coll_time;
   std::int32_t partner = -1;
   const std::int32_t count = gather<slab_size<D>()>(slab);
   earliest(i, candidates_.data(), count, best, partner);
   // best is the old collision time unless a new partner was found (selects, no branch).
-  ev(i).coll_time = best;
+  ev_[i].coll_time = best;
   // Masks instead of selects, which the compiler turned into (mispredicted) branches.
-  EventData& e = ev(i);
+  EventData& e = ev_[i];
   const std::uint32_t keep = static_cast<std::uint32_t>(partner >> 31);  // ones: none found
   const std::uint32_t counter = part_[std::max(partner, 0)].counter;
   e.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(partner) & ~keep) |
                                         (static_cast<std::uint32_t>(e.partner) & keep));
   e.partner_counter = (counter & ~keep) | (e.partner_counter & keep);
   crossing(i);
-  calendar_.update(i, earlier_of(best, ev(i).cross_time));
+  calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1093,7 +1093,7 @@ void Engine<D>::sort_by_cell() {
   last_collision_time_.swap(last);
   id_.swap(ids);
   allocate_cells();
-  for (std::int32_t i = 0; i < n_; ++i) ev(i).slot = -1;
+  std::fill(slot_.begin(), slot_.end(), -1);
   for (std::int32_t i = 0; i < n_; ++i) cell_insert(i, part_[i].cell);
 }
 
@@ -1145,7 +1145,7 @@ int Engine<D>::cell_of_position(const double* r) const {
 template <int D>
 void Engine<D>::build_cells() {
   allocate_cells();
-  for (std::int32_t i = 0; i < n_; ++i) ev(i).slot = -1;
+  std::fill(slot_.begin(), slot_.end(), -1);
   for (std::int32_t i = 0; i < n_; ++i) {
     for (int a = 0; a < D; ++a) {
       double& x = part_[i].r[a];
@@ -1158,11 +1158,11 @@ void Engine<D>::build_cells() {
 
 template <int D>
 void Engine<D>::cell_insert(std::int32_t i, int c) {
-  cell_coords<D>(c, cells_per_side_, ev(i).xyz.data());
+  cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
   file_in_cell(i, c);
 }
 
-// Files i in the slots of cell c; ev(i).xyz must already hold c's coordinates (the hot path,
+// Files i in the slots of cell c; cell_xyz_[i] must already hold c's coordinates (the hot path,
 // a cell crossing, knows them without divisions).
 template <int D>
 [[gnu::always_inline]] inline void Engine<D>::file_in_cell(std::int32_t i, int c) {
@@ -1171,7 +1171,7 @@ template <int D>
   part_[i].cell = c;
   const std::int32_t k = block[0]++;
   block[1 + k] = i;
-  ev(i).slot = k;
+  slot_[i] = k;
 }
 
 template <int D>
@@ -1190,11 +1190,11 @@ void Engine<D>::grow_cells() {
   capacity_ = 2 * (capacity_ + 1) - 1;
   allocate_cells();
   for (std::int32_t k = 0; k < n_; ++k)
-    if (ev(k).slot >= 0) {
+    if (slot_[k] >= 0) {
       std::int32_t* block = cell_block(part_[k].cell);
       const std::int32_t m = block[0]++;
       block[1 + m] = k;
-      ev(k).slot = m;
+      slot_[k] = m;
     }
 }
 
@@ -1203,9 +1203,9 @@ template <int D>
   // Swap-remove: the cell's last member takes i's slot.
   std::int32_t* block = cell_block(part_[i].cell);
   const std::int32_t last = block[block[0]--];
-  block[1 + ev(i).slot] = last;
-  ev(last).slot = ev(i).slot;
-  ev(i).slot = -1;
+  block[1 + slot_[i]] = last;
+  slot_[last] = slot_[i];
+  slot_[i] = -1;
 }
 
 template <int D>
@@ -1255,7 +1255,7 @@ double Engine<D>::min_pair_distance() const {
   double best = k_inf;
   int stencil[stencil_size<D>()];
   for (std::int32_t i = 0; i < n_; ++i) {
-    neighbour_cells<D>(ev(i).xyz.data(), cells_per_side_, stencil);
+    neighbour_cells<D>(cell_xyz_[i].data(), cells_per_side_, stencil);
     for (int s = 0; s < stencil_size<D>(); ++s)
       for (const std::int32_t j : cell_members(stencil[s])) {
         if (j <= i) continue;
@@ -1350,8 +1350,8 @@ Snapshot Engine<D>::snapshot() const {
 template <int D>
 std::size_t Engine<D>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(part_) + bytes(id_) + bytes(last_collision_time_) +
-         bytes(slots_) + bytes(center_) + bytes(nl_) +
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
+         bytes(slot_) + bytes(slots_) + bytes(center_) + bytes(nl_) +
          bytes(nl_count_) + calendar_.memory_bytes();
 }
 

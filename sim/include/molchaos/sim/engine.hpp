@@ -15,7 +15,6 @@
 #include <limits>
 #include <span>
 #include <string>
-#include <type_traits>
 #include <vector>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -118,8 +117,7 @@ class Engine {
   std::int32_t gather(const int* cells);
   void earliest(std::int32_t i, std::int32_t* list, std::int32_t count, double& best,
                 std::int32_t& partner) const;
-  template <class C>
-  bool interior_cell(const C* x) const;
+  bool interior_cell(const int* x) const;
   void stencil_of(std::int32_t i, int* stencil) const;
   void crossing(std::int32_t i);
   void shell_exit(std::int32_t i);
@@ -170,24 +168,17 @@ class Engine {
   };
   std::vector<Particle> part_;
   std::vector<std::int32_t> id_;  // the particle's original index (snapshots keep that order)
-  // Per-particle event bookkeeping, carried by the particle's calendar entry (entry and this: one
-  // 64-byte record, so an event reads its own particle's bookkeeping from one cache line): the
-  // earliest predicted collision (time, partner, partner's counter at prediction), the next
-  // bookkeeping event (cell crossing along cross_axis, or shell exit), and the particle's place in
-  // the cell lists (16-bit cell coordinates in d = 3; the parameter limits keep them below 700).
-  using Coord = std::conditional_t<D == 2, std::int32_t, std::int16_t>;
+  // Per-particle pending event, one 32-byte record: the earliest predicted collision (time,
+  // partner, partner's counter at prediction) and the next bookkeeping event (cell crossing along
+  // cross_axis, or shell exit).
   struct EventData {
     double coll_time = std::numeric_limits<double>::infinity();
     double cross_time = std::numeric_limits<double>::infinity();
     std::int32_t partner = -1;
     std::uint32_t partner_counter = 0;
     std::int32_t cross_axis = 0;
-    std::int32_t slot = -1;      // slot within its cell, -1 when not filed
-    std::array<Coord, D> xyz{};  // cell coordinates
   };
-  static_assert(sizeof(EventData) == 40);
-  EventData& ev(std::int32_t i) { return calendar_.data(i); }
-  const EventData& ev(std::int32_t i) const { return calendar_.data(i); }
+  std::vector<EventData> ev_;
   std::vector<double> last_collision_time_;  // tau of the particle's last collision
   // Cell lists as blocks of capacity_ + 1 ints (a multiple of 8, each block 32-byte aligned):
   // block[0] is the member count, block[1 .. count] the members. The count shares the members'
@@ -195,6 +186,7 @@ class Engine {
   std::vector<std::int32_t> slots_;
   std::size_t slots_origin_ = 0;  // index in slots_ of cell 0's block (32-byte aligned)
   std::size_t cells_ = 0;         // number of cells
+  std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
   int capacity_ = 0;              // members per block
   std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
   std::int32_t* cell_block(int c) {
@@ -208,6 +200,7 @@ class Engine {
     return {block + 1, static_cast<std::size_t>(block[0])};
   }
   void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
+  std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
   // Neighbour lists (dense spheres only): shell centres, lists of nl_capacity_ slots each.
   bool neighbour_lists_ = false;
@@ -221,7 +214,7 @@ class Engine {
   }
 
   // Event calendar: one entry per particle.
-  EventCalendar<EventData> calendar_;
+  EventCalendar calendar_;
   bool prefetch_ = true;  // software prefetches pay only when the data outgrow the cache
 
   // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.

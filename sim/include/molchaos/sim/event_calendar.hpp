@@ -7,31 +7,19 @@
 // leads to the next non-empty bucket without a walk over the empty ones. The bucket width is chosen
 // so that a bucket holds about one event, so the scan is short whatever N (a scan is cheaper
 // than keeping the current bucket in a heap: measured, instruction counts).
-//
-// Each particle's calendar entry can carry a payload (the engine's per-particle event
-// bookkeeping), so that everything an event reads about its own particle shares one cache line.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace molchaos::sim {
 
-struct NoPayload {};
-
-template <class Payload = NoPayload>
 class EventCalendar {
  public:
-  /// Entries (and payloads) for particles 0..n-1; payloads of existing particles are kept.
-  void allocate(std::int32_t n) { e_.resize(static_cast<std::size_t>(n)); }
-  Payload& data(std::int32_t i) { return e_[static_cast<std::size_t>(i)].data; }
-  const Payload& data(std::int32_t i) const { return e_[static_cast<std::size_t>(i)].data; }
-
   /// Empties the calendar for particles 0..n-1; times are measured from `origin`.
   void reset(std::int32_t n, double origin, double bucket_width, std::int64_t buckets) {
     n_ = n;
@@ -41,12 +29,7 @@ class EventCalendar {
     buckets_ = 64;
     while (buckets_ < buckets) buckets_ *= 2;
     mask_ = buckets_ - 1;
-    e_.resize(static_cast<std::size_t>(n));
-    for (Entry& entry : e_) {  // the links only: payloads are kept
-      entry.time = k_inf;
-      entry.where = k_absent;
-      entry.next = entry.prev = -1;
-    }
+    e_.assign(static_cast<std::size_t>(n), Entry{});
     head_.assign(static_cast<std::size_t>(buckets_), -1);
     occupied_.assign(static_cast<std::size_t>(buckets_ / 64), 0);
     overflow_ = -1;
@@ -209,15 +192,11 @@ class EventCalendar {
   double origin_ = 0, width_ = 1, inv_width_ = 1;
   std::int64_t buckets_ = 1, mask_ = 0, current_ = 0, cycle_start_ = 0;
   std::int64_t filed_ = 0;  // events in the buckets (not in the overflow)
-  // Everything kept per particle in one record: 24 bytes without payload; with one, a record of
-  // one cache line when it fits (the engine's does).
-  static constexpr std::size_t k_align =
-      std::is_empty_v<Payload> || 24 + sizeof(Payload) > 64 ? alignof(double) : 64;
-  struct alignas(k_align) Entry {
+  // Everything the calendar keeps per particle, in one 24-byte record (one cache miss per event).
+  struct Entry {
     double time = k_inf;
     std::int32_t where = k_absent;      // bucket slot, or k_in_overflow / k_absent
     std::int32_t next = -1, prev = -1;  // in the bucket's or the overflow's list
-    [[no_unique_address]] Payload data{};
   };
   std::vector<Entry> e_;
   std::vector<std::int32_t> head_;
