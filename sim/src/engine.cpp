@@ -848,8 +848,7 @@ void Engine<D>::predict(std::int32_t i) {
   double best = k_inf;
   std::int32_t partner = -1;
   if (neighbour_lists_) {
-    earliest(i, nl_.data() + static_cast<std::size_t>(i) * nl_capacity_, nl_count_[i], best,
-             partner);
+    earliest(i, neighbour_slots(i), nl_count_[i], best, partner);
   } else {
     int stencil[stencil_size<D>()];
     stencil_of(i, stencil);
@@ -890,12 +889,12 @@ void Engine<D>::shell_exit(std::int32_t i) {
 template <int D>
 void Engine<D>::add_neighbour(std::int32_t i, std::int32_t j) {
   if (nl_count_[i] + 1 >= nl_capacity_) grow_neighbour_lists();  // a spare slot for earliest()
-  nl_[static_cast<std::size_t>(i) * nl_capacity_ + nl_count_[i]++] = j;
+  neighbour_slots(i)[nl_count_[i]++] = j;
 }
 
 template <int D>
 void Engine<D>::remove_neighbour(std::int32_t i, std::int32_t j) {
-  std::int32_t* list = nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
+  std::int32_t* list = neighbour_slots(i);
   for (std::int32_t k = 0; k < nl_count_[i]; ++k)
     if (list[k] == j) {
       list[k] = list[--nl_count_[i]];
@@ -942,13 +941,7 @@ void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
     cand[found] = j;
     found += static_cast<int>((d2 < cutoff2) & (j != i) & (!only_higher | (j > i)));
   }
-  for (std::int32_t k = 0; k < found; ++k) {
-    const std::int32_t j = cand[k];
-    __builtin_prefetch(&nl_count_[j]);
-    const std::int32_t* list = nl_.data() + static_cast<std::size_t>(j) * nl_capacity_;
-    __builtin_prefetch(list);
-    __builtin_prefetch(list + 16);
-  }
+  for (std::int32_t k = 0; k < found; ++k) prefetch_neighbour_list(cand[k]);
   for (std::int32_t k = 0; k < found; ++k) {
     add_neighbour(i, cand[k]);
     add_neighbour(cand[k], i);
@@ -965,12 +958,8 @@ void Engine<D>::rebuild_neighbours(std::int32_t i) {
     center_[D * i + a] = x;
   }
   const auto old = neighbours(i);
-  for (const std::int32_t k : old) {  // their lists, where i is struck out
-    const std::int32_t* list = nl_.data() + static_cast<std::size_t>(k) * nl_capacity_;
-    __builtin_prefetch(list);
-    __builtin_prefetch(list + 16);
-    __builtin_prefetch(&nl_count_[k]);
-  }
+  // Their lists, where i is struck out.
+  for (const std::int32_t k : old) prefetch_neighbour_list(k);
   for (const std::int32_t k : old) remove_neighbour(k, i);
   nl_count_[i] = 0;
   cell_remove(i);

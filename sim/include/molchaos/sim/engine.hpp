@@ -208,9 +208,20 @@ class Engine {
   std::vector<double> center_;
   std::vector<std::int32_t> nl_, nl_count_;
   int nl_capacity_ = 0;
+  // i's nl_capacity_ slots: its nl_count_[i] neighbours, then room (always one spare slot).
+  std::int32_t* neighbour_slots(std::int32_t i) {
+    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
+  }
+  const std::int32_t* neighbour_slots(std::int32_t i) const {
+    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
+  }
   std::span<const std::int32_t> neighbours(std::int32_t i) const {
-    return {nl_.data() + static_cast<std::size_t>(i) * nl_capacity_,
-            static_cast<std::size_t>(nl_count_[i])};
+    return {neighbour_slots(i), static_cast<std::size_t>(nl_count_[i])};
+  }
+  void prefetch_neighbour_list(std::int32_t i) const {
+    __builtin_prefetch(&nl_count_[i]);
+    __builtin_prefetch(neighbour_slots(i));
+    __builtin_prefetch(neighbour_slots(i) + 16);
   }
 
   // Event calendar: one entry per particle.
