@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
-#include <numbers>
 #include <string>
 #include <tuple>
 
+#include "engine_cases.hpp"
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/sim/run.hpp"
 
@@ -104,14 +104,8 @@ BENCHMARK(bm_disks)
 // The paper's run (Fig. 3): d = 2, N = 5000, n = 0.05, restitution 0.93, shuffle range(0)
 // (0 none, 1 paper, 2 flux); 2e5 collisions (40 per particle, well before clustering).
 void bm_paper_case(benchmark::State& state) {
-  Parameters p;
-  p.dimension = 2;
-  p.particles = 5000;
-  p.density = 0.05;
-  p.restitution = 0.93;
-  p.randomize = static_cast<Randomization>(state.range(0));
-  p.relax_collisions_per_particle = 1;
-  time_collisions<2>(state, p, 200000);
+  time_collisions<2>(state, molchaos::bench::paper_case(static_cast<Randomization>(state.range(0))),
+                     200000);
 }
 BENCHMARK(bm_paper_case)
     ->Arg(0)
@@ -124,13 +118,9 @@ BENCHMARK(bm_paper_case)
 
 // d = 3 elastic spheres, N = 1e5, packing fraction range(0) / 100.
 void bm_spheres(benchmark::State& state) {
-  Parameters p;
-  p.dimension = 3;
-  p.particles = 100000;
-  p.density = static_cast<double>(state.range(0)) / 100.0 * 6.0 / std::numbers::pi;
-  p.restitution = 1.0;
-  p.relax_collisions_per_particle = 2;
-  time_collisions<3>(state, p, 2000000);
+  time_collisions<3>(state,
+                     molchaos::bench::spheres_case(static_cast<double>(state.range(0)) / 100.0),
+                     2000000);
 }
 BENCHMARK(bm_spheres)
     ->Arg(10)

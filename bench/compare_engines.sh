@@ -11,6 +11,8 @@ rev=${2:?usage: compare_engines.sh BUILD_DIR REV [ROUNDS] [FILTER]}
 rounds=${3:-3}
 filter=${4:-.}
 case "$rounds" in ''|*[!0-9]*|0) echo "compare_engines.sh: ROUNDS must be a whole number >= 1, got '$rounds'" >&2; exit 2;; esac
+build=$(cd "$build" 2>/dev/null && pwd) || { echo "compare_engines.sh: no build directory '$1'" >&2; exit 1; }
+cd "$(dirname "$0")/.."  # the repository, whatever the caller's directory
 now="$build/bench/bench_engine"
 [ -x "$now" ] || { echo "compare_engines.sh: $now not built (cmake --build $build)" >&2; exit 1; }
 git rev-parse --verify -q "$rev^{commit}" >/dev/null || { echo "compare_engines.sh: REV '$rev' is not a commit" >&2; exit 2; }

@@ -1,12 +1,10 @@
 // Deterministic work counts of the event-driven engine, for a shared machine whose wall-clock
 // rates drift by tens of percent within minutes. Run under callgrind by engine_counts.sh: the
-// setup (placement, relaxation) is not collected; only the timed phase of each case is: the paper's
-// case as in bench_engine, the 3D cases over 5e5 of bench_engine's 2e6 collisions. Without valgrind the toggles do nothing and the program just
-// runs the cases.
+// setup (placement, relaxation) is not collected, only the timed phase of each case of
+// bench_engine (engine_cases.hpp): the paper's case whole, the 3D cases over 5e5 of their 2e6
+// collisions. Without valgrind the toggles do nothing and the program just runs the cases.
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
-#include <numbers>
 #include <string>
 
 #if __has_include(<valgrind/callgrind.h>)
@@ -15,6 +13,7 @@
 #define CALLGRIND_TOGGLE_COLLECT
 #endif
 
+#include "engine_cases.hpp"
 #include "molchaos/sim/engine.hpp"
 
 namespace {
@@ -40,21 +39,10 @@ void run(const Parameters& p, std::uint64_t collisions) {
 
 int main(int argc, char** argv) {
   const std::string which = argc > 1 ? argv[1] : "";
-  Parameters p;
-  p.relax_collisions_per_particle = 1;
   if (which == "paper") {  // bm_paper_case/shuffle:0
-    p.dimension = 2;
-    p.particles = 5000;
-    p.density = 0.05;
-    p.restitution = 0.93;
-    run<2>(p, 200000);
+    run<2>(molchaos::bench::paper_case(molchaos::sim::Randomization::none), 200000);
   } else if (which == "spheres10" || which == "spheres40") {  // bm_spheres
-    p.dimension = 3;
-    p.particles = 100000;
-    p.density = (which == "spheres10" ? 0.1 : 0.4) * 6.0 / std::numbers::pi;
-    p.restitution = 1.0;
-    p.relax_collisions_per_particle = 2;
-    run<3>(p, 500000);
+    run<3>(molchaos::bench::spheres_case(which == "spheres10" ? 0.1 : 0.4), 500000);
   } else {
     std::fprintf(stderr, "usage: engine_counts paper|spheres10|spheres40\n");
     return 2;
