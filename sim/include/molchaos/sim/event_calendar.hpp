@@ -69,17 +69,10 @@ class EventCalendar {
       }
       // On to the next occupied bucket. The filed events lie in buckets [current_, cycle_start_ +
       // buckets_), whose slots follow the current slot cyclically, so the cyclically next set bit
-      // is the earliest of them (and the cycle does not end before it).
+      // is the earliest of them (and the cycle does not end before it). Events are filed, so a
+      // search over the whole bitmap finds one.
       const std::int64_t slot = current_ & mask_;
-      const std::int64_t words = buckets_ / 64;
-      std::int64_t w = slot >> 6;
-      std::uint64_t bits = occupied_[static_cast<std::size_t>(w)] & (~std::uint64_t{0} << (slot & 63));
-      while (bits == 0) {
-        w = (w + 1) & (words - 1);
-        bits = occupied_[static_cast<std::size_t>(w)];
-      }
-      const std::int64_t next = w * 64 + __builtin_ctzll(bits);
-      current_ += (next - slot) & mask_;
+      current_ += (next_occupied(slot, buckets_ / 64) - slot) & mask_;
     }
   }
 
@@ -90,16 +83,8 @@ class EventCalendar {
     const std::int32_t k = head_[static_cast<std::size_t>(slot)];
     if (k != first) return k;
     if (e_[k].next >= 0) return e_[k].next;
-    const std::int64_t words = buckets_ / 64;
-    std::int64_t w = slot >> 6;
-    std::uint64_t bits =
-        occupied_[static_cast<std::size_t>(w)] & ((~std::uint64_t{0} << (slot & 63)) << 1);
-    if (bits == 0) {
-      w = (w + 1) & (words - 1);
-      bits = occupied_[static_cast<std::size_t>(w)];
-      if (bits == 0) return -1;
-    }
-    return head_[static_cast<std::size_t>(w * 64 + __builtin_ctzll(bits))];
+    const std::int64_t next = next_occupied((slot + 1) & mask_, 1);  // nearby: one word further
+    return next < 0 ? -1 : head_[static_cast<std::size_t>(next)];
   }
 
   void prefetch(std::int32_t i) const { __builtin_prefetch(&e_[static_cast<std::size_t>(i)]); }
@@ -120,6 +105,20 @@ class EventCalendar {
     const double b = (t - origin_) * inv_width_;
     if (!(b < 4e18)) return std::numeric_limits<std::int64_t>::max();
     return static_cast<std::int64_t>(b);
+  }
+
+  // The first occupied bucket slot at or cyclically after `slot`, reading at most `more_words`
+  // bitmap words beyond slot's own; -1 if none of those bits is set. top() and guess_next() share
+  // it: top() searches the whole bitmap, guess_next() only nearby.
+  std::int64_t next_occupied(std::int64_t slot, std::int64_t more_words) const {
+    std::int64_t w = slot >> 6;
+    std::uint64_t bits = occupied_[static_cast<std::size_t>(w)] & (~std::uint64_t{0} << (slot & 63));
+    for (std::int64_t read = 0; bits == 0; ++read) {
+      if (read == more_words) return -1;
+      w = (w + 1) & (buckets_ / 64 - 1);
+      bits = occupied_[static_cast<std::size_t>(w)];
+    }
+    return w * 64 + __builtin_ctzll(bits);
   }
 
   void insert(std::int32_t i) {
