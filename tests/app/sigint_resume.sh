@@ -7,19 +7,26 @@ set -m  # job control: a background job must not start with SIGINT ignored
 bin=$1
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-args=(sweep --particles 2000 --density 0.05 --restitution 0.85,0.9,0.95 --randomize none,flux --seeds 4 --quiet --threads 2)
+# 72 runs: several seconds even on a fast machine, while the interrupt comes as soon as the first run
+# is cached (a fixed sleep let the whole sweep finish first on a faster machine).
+args=(sweep --particles 2000 --density 0.05 --restitution 0.85,0.9,0.95 --randomize none,flux --seeds 12 --quiet --threads 2)
 "$bin" "${args[@]}" --cache "$dir/ref" --out "$dir/ref.csv" >/dev/null || { echo "FAIL: reference sweep"; exit 1; }
 total=$(ls "$dir/ref" | wc -l)
 
 "$bin" "${args[@]}" --cache "$dir/int" --out "$dir/int.csv" >/dev/null 2>&1 &
 pid=$!
-sleep 2
-kill -INT "$pid"
+cached() { ls "$dir/int" 2>/dev/null | grep -c '\.csv$'; }
+for _ in $(seq 1200); do  # up to 60 s for the first cached run
+  [ "$(cached)" -ge 1 ] && break
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.05
+done
+kill -INT "$pid" || { echo "FAIL: the sweep ended before it could be interrupted"; exit 1; }
 wait "$pid"
 status=$?
 echo "interrupted sweep exited with status $status"
 [ ! -e "$dir/int.csv" ] || { echo "FAIL: summary written by an interrupted sweep"; exit 1; }
-done_runs=$(ls "$dir/int" 2>/dev/null | grep -c '\.csv$')
+done_runs=$(cached)
 echo "cache entries after the interrupt: $done_runs of $total"
 for f in "$dir"/int/*.csv; do
   [ -e "$f" ] || continue
