@@ -6,6 +6,7 @@
 #   bench/compare_engines.sh BUILD_DIR REV [ROUNDS=3] [FILTER=.]
 # Takes ROUNDS x 2 bench runs (1-2 min each) plus the build of REV's bench (about 2 minutes).
 set -euo pipefail
+. "$(dirname "$0")/rates_lib.sh"
 build=${1:?usage: compare_engines.sh BUILD_DIR REV [ROUNDS] [FILTER]}
 rev=${2:?usage: compare_engines.sh BUILD_DIR REV [ROUNDS] [FILTER]}
 rounds=${3:-3}
@@ -28,27 +29,22 @@ for r in $(seq "$rounds"); do
     exe=$old; [ "$side" = now ] && exe=$now
     echo "round $r/$rounds: $side" >&2
     "$exe" --benchmark_filter="$filter" 2>/dev/null |
-      awk -v s="$side" -v r="$r" '/collisions_per_cpu_s=/ {
+      awk -v s="$side" -v r="$r" "$rates_awk"'/collisions_per_cpu_s=/ {
         name = $1; sub("/iterations:1/manual_time", "", name)
-        for (i = 1; i <= NF; ++i) if ($i ~ /^collisions_per_cpu_s=/) {
-          v = substr($i, 22); m = 1
-          if (v ~ /k$/) { m = 1e3; sub("k$", "", v) } else if (v ~ /M$/) { m = 1e6; sub("M$", "", v) }
-          printf "%s %s %s %.6f\n", name, s, r, v * m / 1e6 }
+        for (i = 1; i <= NF; ++i) if ($i ~ /^collisions_per_cpu_s=/)
+          printf "%s %s %s %.6f\n", name, s, r, millions(substr($i, 22))
       }' >>"$tmp/rates"
   done
 done
 echo "collisions per CPU second (millions): median [min-max] over $rounds rounds; now = this tree, old = $rev"
-sort -k1,1 -k3,3n -k2,2 "$tmp/rates" | awk '
-  function med(a, n,   i, j, t) { for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j-1] > a[j]; --j) { t = a[j]; a[j] = a[j-1]; a[j-1] = t }
-                                  return n % 2 ? a[(n+1)/2] : (a[n/2] + a[n/2+1]) / 2 }
+sort -k1,1 -k3,3n -k2,2 "$tmp/rates" | awk "$rates_awk"'
   function flush(   k, ro, rn, line) {
     if (name == "") return
-    for (k = 1; k <= n; ++k) { ro[k] = o[k]; rn[k] = w[k]; ratio[k] = w[k] / o[k] }
-    line = ""; for (k = 1; k <= n; ++k) line = line sprintf(" %.2f", ratio[k])
-    printf "%-45s now %.3f [%.3f-%.3f]  old %.3f [%.3f-%.3f]  ratios%s\n", name, med(rn, n), lo(w, n), hi(w, n), med(ro, n), lo(o, n), hi(o, n), line
+    line = ""
+    for (k = 1; k <= n; ++k) { ro[k] = o[k]; rn[k] = w[k]; line = line sprintf(" %.2f", w[k] / o[k]) }
+    sort(ro, n); sort(rn, n)
+    printf "%-45s now %.3f [%.3f-%.3f]  old %.3f [%.3f-%.3f]  ratios%s\n", name, med(rn, n), rn[1], rn[n], med(ro, n), ro[1], ro[n], line
   }
-  function lo(a, n,   k, m) { m = a[1]; for (k = 2; k <= n; ++k) if (a[k] < m) m = a[k]; return m }
-  function hi(a, n,   k, m) { m = a[1]; for (k = 2; k <= n; ++k) if (a[k] > m) m = a[k]; return m }
   { if ($1 != name) { flush(); name = $1; n = 0; delete o; delete w }
     if ($2 == "old") { n = $3; o[n] = $4 } else { w[$3] = $4 } }
   END { flush() }'

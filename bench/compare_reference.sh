@@ -12,6 +12,7 @@
 # bm_spheres case it is compared with. Nothing is built here: the reference programs are built
 # by whoever runs the comparison, outside this repository.
 set -euo pipefail
+. "$(dirname "$0")/rates_lib.sh"
 usage="usage: compare_reference.sh BUILD_DIR ROUNDS 'LABEL:PACKING_PERCENT:COMMAND' ..."
 build=${1:?$usage}
 rounds=${2:?$usage}
@@ -27,15 +28,11 @@ for ref in "$@"; do
 done
 rates=$(mktemp)
 trap 'rm -f "$rates"' EXIT
-# Google Benchmark prints counters with k/M suffixes; the reference prints plain numbers.
-to_millions() { awk '{ v = $0; m = 1; if (v ~ /k$/) { m = 1e3; sub("k$", "", v) } else if (v ~ /M$/) { m = 1e6; sub("M$", "", v) }
-                       printf "%.6f\n", v * m / 1e6 }'; }
 for r in $(seq "$rounds"); do
   echo "round $r/$rounds: this engine" >&2
   "$ours" --benchmark_filter=bm_spheres 2>/dev/null |
-    awk -v r="$r" '/^bm_spheres/ { split($1, a, "[:/]"); p = a[3]
-      for (i = 1; i <= NF; ++i) if ($i ~ /^collisions_per_cpu_s=/) print "ours" p, r, substr($i, 22) }' |
-    while read -r key round value; do echo "$key $round $(to_millions <<<"$value")"; done >>"$rates"
+    awk -v r="$r" "$rates_awk"'/^bm_spheres/ { split($1, a, "[:/]"); p = a[3]
+      for (i = 1; i <= NF; ++i) if ($i ~ /^collisions_per_cpu_s=/) printf "ours%s %s %.6f\n", p, r, millions(substr($i, 22)) }' >>"$rates"
   [ "$(grep -c "^ours[14]0 $r " "$rates")" = 2 ] ||
     { echo "compare_reference.sh: $ours printed no bm_spheres rates in round $r" >&2; exit 1; }
   for ref in "$@"; do
@@ -44,15 +41,13 @@ for r in $(seq "$rounds"); do
     value=$({ bash -c "$command" 2>/dev/null || true; } | { grep -o 'collisions_per_cpu_s=[0-9.eE+]*' || true; } |
             head -1 | cut -d= -f2)
     [ -n "$value" ] || { echo "compare_reference.sh: '$label' printed no collisions_per_cpu_s=" >&2; exit 1; }
-    echo "$label $r $(to_millions <<<"$value") $packing" >>"$rates"
+    awk -v label="$label" -v r="$r" -v v="$value" -v p="$packing" "$rates_awk"'BEGIN { printf "%s %s %.6f %s\n", label, r, millions(v), p }' >>"$rates"
   done
 done
 echo "collisions per CPU second (millions), median [min-max] over $rounds alternating rounds"
 for ref in "$@"; do
   IFS=: read -r label packing command <<<"$ref"
-  awk -v label="$label" -v ours="ours$packing" '
-    function sort(a, n,   i, j, t) { for (i = 2; i <= n; ++i) for (j = i; j > 1 && a[j-1] > a[j]; --j) { t = a[j]; a[j] = a[j-1]; a[j-1] = t } }
-    function med(a, n) { return n % 2 ? a[(n+1)/2] : (a[n/2] + a[n/2+1]) / 2 }
+  awk -v label="$label" -v ours="ours$packing" "$rates_awk"'
     $1 == ours  { o[$2] = $3 }
     $1 == label { t[$2] = $3; n = $2 > n ? $2 : n }
     END {
