@@ -175,7 +175,12 @@ typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
     ahead_[ahead] = draw_pair(rng);
     ahead = (ahead + 1) % k_lookahead;
     ++candidates;
-    survival *= 1.0 - rng.uniform();
+    // One 64-bit draw gives the candidate's two uniforms, 32 bits each: the waiting time's
+    // (k + 1/2)/2^32 in (0, 1) and the acceptance's k/2^32 in [0, 1). Their resolution 2^-32
+    // shifts an acceptance probability or the exponential's distribution function by at most
+    // 2.3e-10, far below anything a run can resolve, and saves a third of the generator calls.
+    const std::uint64_t uniforms = rng.next();
+    survival *= (static_cast<double>(uniforms >> 32) + 0.5) * 0x1.0p-32;
     if (survival < threshold_) {
       const double now = clock_ - std::log(survival) / rate_;
       survival = 1.0;
@@ -191,7 +196,7 @@ typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
       g[a] = velocity_[pair.i].u[a] - velocity_[pair.j].u[a];
       g2 += g[a] * g[a];
     }
-    const double accept = rng.uniform();
+    const double accept = static_cast<double>(uniforms & 0xffffffffu) * 0x1.0p-32;
     if (accept * accept * pair_bound2_ >= g2) continue;  // accepted iff accept·2B < |g|
     const bool bound_raised = collide(pair.i, pair.j, g, g2, rng);
     if (bound_raised || collisions_ == next_bookkeeping_ || sum_u2_ < min_sum_u2_) {
