@@ -28,6 +28,8 @@ namespace molchaos::sim {
 /// the current Λ: their sum is −ln Π u_k / Λ, so the hot loop multiplies uniforms and takes one
 /// logarithm only when Λ changes, the product nears underflow, or a stop time is crossed (the
 /// remaining wait is then discarded: by memorylessness a fresh one starts at the stop time).
+/// A candidate's waiting-time and acceptance uniforms have 32 bits each (one generator call):
+/// probabilities are then resolved to 2^-32, far below any statistical error a run reaches.
 ///
 /// Internal units: velocities u = s·v are rescaled by s → s/√T_internal whenever the internal
 /// temperature falls below 1/4 (checked every N/4 collisions), so numbers stay O(1) in long
