@@ -15,6 +15,7 @@
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/dimension.hpp"
+#include "molchaos/theory/exact_values.hpp"
 #include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/version.hpp"
 
@@ -47,6 +48,12 @@ nlohmann::json to_json(const theory::PaperCheck& c, const std::string& term) {
   if (c.paper) row["difference"] = c.computed - *c.paper;
   if (!c.note.empty()) row["note"] = c.note;
   return row;
+}
+
+// The exact form the symbolic derivation gives for a μ2 coefficient ("-" where it has none).
+std::string exact_text(int dimension, double dyad_factor, const std::string& term) {
+  const auto* t = theory::exact::find_moment_term(dimension, 2, dyad_factor, term);
+  return t ? t->coefficient_text : "-";
 }
 
 std::string verdict_text(const theory::PaperCheck& c) {
@@ -110,12 +117,18 @@ void run_theory(const TheoryOptions& o) {
     j["A_uncorrelated"] = p.A_uncorrelated.value;
     j["enskog_collision_frequency"] = p.enskog_collision_frequency;
     j["coefficients"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < coefficient_rows.size(); ++i)
+    for (std::size_t i = 0; i < coefficient_rows.size(); ++i) {
       j["coefficients"].push_back(to_json(coefficient_rows[i], table.terms[i].name));
+      j["coefficients"].back()["exact"] =
+          exact_text(o.dimension, theory::k_paper_dyad_factor, table.terms[i].name);
+    }
     j["coefficients_traceless_dyad"] = nlohmann::json::array();
     for (const auto& t : traceless.terms)
-      j["coefficients_traceless_dyad"].push_back(
-          {{"term", t.name}, {"computed", t.coefficient.value}, {"error", t.coefficient.error}});
+      j["coefficients_traceless_dyad"].push_back({{"term", t.name},
+                                                  {"computed", t.coefficient.value},
+                                                  {"error", t.coefficient.error},
+                                                  {"exact", exact_text(o.dimension, o.dimension,
+                                                                       t.name)}});
     j["prefactors"] = nlohmann::json::array();
     for (const auto& row : prefactor_rows) j["prefactors"].push_back(to_json(row, ""));
     j["seconds"] = seconds;
@@ -137,19 +150,23 @@ void run_theory(const TheoryOptions& o) {
   std::cout << fmt::format("  A (b = 0)            {:.10g} ± {:.2g}\n", p.A_uncorrelated.value,
                            p.A_uncorrelated.error);
   std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n\n", p.enskog_collision_frequency);
-  std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9}  {}\n", "μ2/μ2(0,0) coefficient", "paper",
-                           "computed", "error", "verdict");
-  for (const auto& r : coefficient_rows)
-    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}  {}\n", r.quantity,
-                             r.paper ? fmt::format("{:.6f}", *r.paper) : "-", r.computed, r.error,
-                             verdict_text(r));
+  std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9} {:>10}  {}\n", "μ2/μ2(0,0) coefficient",
+                           "paper", "computed", "error", "exact", "verdict");
+  for (std::size_t i = 0; i < coefficient_rows.size(); ++i) {
+    const auto& r = coefficient_rows[i];
+    std::cout << fmt::format(
+        "{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}  {}\n", r.quantity,
+        r.paper ? fmt::format("{:.6f}", *r.paper) : "-", r.computed, r.error,
+        exact_text(o.dimension, theory::k_paper_dyad_factor, table.terms[i].name), verdict_text(r));
+  }
   std::cout << (o.dimension == 3
                     ? std::string("\nthe printed dyad 3·ee − U is already traceless in d = 3:\n")
                     : std::string(
                           "\ntraceless dyad (2·ee − U) instead of the printed 3·ee − U:\n"));
   for (const auto& t : traceless.terms)
-    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}\n", "μ2 coefficient of " + t.name,
-                             "-", t.coefficient.value, t.coefficient.error);
+    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}\n",
+                             "μ2 coefficient of " + t.name, "-", t.coefficient.value,
+                             t.coefficient.error, exact_text(o.dimension, o.dimension, t.name));
   std::cout << fmt::format("\n{:<52} {:>10} {:>14} {:>9}  {}\n", "prefactor", "paper", "computed",
                            "error", "verdict");
   for (const auto& r : prefactor_rows)

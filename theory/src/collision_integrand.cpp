@@ -46,14 +46,16 @@ CentreOfMassSum::CentreOfMassSum(const IntegrandSpec& spec, int hermite_order) :
 
 namespace {
 
-double power_of_square(double square, int p) {
+// (x + δ)^{p/2} − x^{p/2} with the factor δ taken out: p = 2, 4, 6.
+double change_of_power(double x, double delta, int p) {
+  const double y = x + delta;
   switch (p) {
     case 2:
-      return square;
+      return delta;
     case 4:
-      return square * square;
+      return delta * (y + x);
     default:
-      return square * square * square;
+      return delta * (y * y + y * x + x * x);
   }
 }
 
@@ -80,12 +82,11 @@ void CentreOfMassSum::accumulate(double u, double rho, double scale, TermSums& s
     double observable = 1.0;
     switch (spec_.observable) {
       case Observable::moment_change: {
-        // Only the normal components change in a collision.
-        const double c1n_after = c1n - kick, c2n_after = c2n + kick;
-        const double c1sq_after = c1sq - c1n * c1n + c1n_after * c1n_after;
-        const double c2sq_after = c2sq - c2n * c2n + c2n_after * c2n_after;
-        observable = power_of_square(c1sq_after, p) + power_of_square(c2sq_after, p) -
-                     power_of_square(c1sq, p) - power_of_square(c2sq, p);
+        // Only the normal components change in a collision. The changes of c² are formed
+        // directly (δ = c²_after − c²), not as a difference of large squares, so that rounding
+        // stays relative to the integrand and not to the speeds at the outer nodes.
+        const double delta1 = kick * (kick - 2.0 * c1n), delta2 = kick * (kick + 2.0 * c2n);
+        observable = change_of_power(c1sq, delta1, p) + change_of_power(c2sq, delta2, p);
         break;
       }
       case Observable::one:

@@ -12,6 +12,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <memory>
@@ -56,7 +57,9 @@ GaussPass gauss_pass(const IntegrandSpec& spec, int hermite_order, int laguerre_
 
 // The exact rule and one of the next order: both integrate the polynomial exactly, so their
 // difference measures what rounding (or, with orders set too low on purpose, truncation) leaves.
-// The bound 16·DBL_EPSILON·Σ|w f| covers the rounding of the sums themselves.
+// The rounding bound degree·(order + 1)·DBL_EPSILON·Σ|w f|: a Golub–Welsch node carries an
+// absolute error of order (order)·ε times the largest node (the norm of the Jacobi matrix), which
+// a polynomial of the given degree amplifies up to (degree)-fold relative to its value.
 TermIntegrals integrate_terms_gauss(const IntegrandSpec& spec, const QuadratureOptions& o) {
   const int degree = polynomial_degree(spec);
   const int n_c = o.hermite_order > 0 ? o.hermite_order : exact_gauss_order(degree);
@@ -66,9 +69,9 @@ TermIntegrals integrate_terms_gauss(const IntegrandSpec& spec, const QuadratureO
   const double scale = prefactor(spec);
   TermIntegrals out;
   out.evaluations = low.evaluations + high.evaluations;
+  const double rounding = degree * (std::max(n_c, n_l) + 2.0) * DBL_EPSILON;
   for (std::size_t t = 0; t < k_term_count; ++t) {
-    const double error =
-        std::abs(high.sums[t] - low.sums[t]) + 16.0 * DBL_EPSILON * high.magnitudes[t];
+    const double error = std::abs(high.sums[t] - low.sums[t]) + rounding * high.magnitudes[t];
     out.terms[t] = {scale * high.sums[t], std::abs(scale) * error};
   }
   return out;
