@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "molchaos/theory/contact_value.hpp"
+#include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/theory/sonine.hpp"
 
@@ -39,6 +40,7 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   out.packing_fraction = packing_fraction(in.dimension, in.density);
   out.g2 = contact_value_g2(in.dimension, out.packing_fraction);
   out.a2 = in.a2 ? *in.a2 : a2_first_sonine(in.dimension, in.restitution);
+  require_correlation_b(in.dimension, out.a2, in.dyad_factor, in.correlation_b, in.quadrature);
   out.omega0 = cooling_frequency_omega0(in.dimension, in.density, in.initial_temperature);
   out.enskog_collision_frequency =
       enskog_collision_frequency(in.dimension, in.density, in.initial_temperature);
