@@ -40,7 +40,6 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   out.packing_fraction = packing_fraction(in.dimension, in.density);
   out.g2 = contact_value_g2(in.dimension, out.packing_fraction);
   out.a2 = in.a2 ? *in.a2 : a2_first_sonine(in.dimension, in.restitution);
-  require_correlation_b(in.dimension, out.a2, in.dyad_factor, in.correlation_b, in.quadrature);
   out.omega0 = cooling_frequency_omega0(in.dimension, in.density, in.initial_temperature);
   out.enskog_collision_frequency =
       enskog_collision_frequency(in.dimension, in.density, in.initial_temperature);
@@ -50,6 +49,7 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   const double eps_table = in.restitution < 1.0 ? in.restitution : 0.5;
   const ExpansionTable table =
       expand_collision_moment(in.dimension, 2, eps_table, in.dyad_factor, in.quadrature);
+  require_correlation_b(table, out.a2, in.correlation_b, in.quadrature);
   out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b});
   const Estimate ratio_uncorrelated = table.ratio_estimate(PairShape{out.a2, 0.0, 0.0});
   if (in.restitution < 1.0) {

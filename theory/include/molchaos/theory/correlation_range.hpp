@@ -18,8 +18,12 @@ struct CorrelationRange {
 CorrelationRange correlation_b_range(int dimension, double a2, double dyad_factor,
                                      const QuadratureOptions& options = {});
 
+/// The same from a μ2 expansion table already at hand (any ε < 1; its ratio does not depend on ε).
+CorrelationRange correlation_b_range(const ExpansionTable& mu2_table, double a2,
+                                     const QuadratureOptions& options = {});
+
 /// Throws std::invalid_argument naming `correlation_b` and the range unless b lies in it.
-void require_correlation_b(int dimension, double a2, double dyad_factor, double b,
+void require_correlation_b(const ExpansionTable& mu2_table, double a2, double b,
                            const QuadratureOptions& options = {});
 
 }  // namespace molchaos::theory
