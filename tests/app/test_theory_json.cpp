@@ -1,5 +1,6 @@
 // `molchaos theory --json` for d = 2 and 3: one complete JSON document with the inputs, the
-// predictions and the coefficient rows the issue names, with the verdicts the integral implies.
+// predictions, the coefficient rows, the Sonine levels and the contact response, with the verdicts
+// the integral implies.
 #define BOOST_TEST_MODULE cli_theory_json
 #include <boost/test/unit_test.hpp>
 #include <cmath>

@@ -13,7 +13,7 @@
 using namespace molchaos::theory;
 
 namespace {
-constexpr double k_rel = 1e-9;  // the bound on every coefficient and closed form
+constexpr double k_rel = 1e-9;  // the agreement asked of every coefficient and closed form
 QuadratureOptions tight() {
   QuadratureOptions q;
   q.relative_tolerance = 1e-11;
