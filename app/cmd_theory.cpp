@@ -304,8 +304,8 @@ void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
 void print_contact_text(const theory::ContactResponse& c) {
   std::cout << fmt::format(
       "\ncolliding pairs under f2 = f f g2 [1 + b D], D = {}·ee − U, to first order:\n"
-      "{:<26} {:>20} {:>20} {:>20} {:>20}\n",
-      c.dyad_factor, "quantity", "value", "∂/∂a2", "∂/∂b", "∂²/∂a2∂b");
+      "{:<26} {:>26} {:>26} {:>26} {:>26}\n",
+      c.dyad_factor, "quantity", "value (exact)", "∂/∂a2", "∂/∂b", "∂²/∂a2∂b");
   const std::pair<const char*, const theory::ResponseSeries*> rows[] = {
       {"normal_product", &c.normal_product},
       {"velocity_product", &c.velocity_product},
@@ -315,9 +315,9 @@ void print_contact_text(const theory::ContactResponse& c) {
   for (const auto& [name, s] : rows) {
     const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
     auto cell = [&](const theory::Estimate& e, int k) {
-      return fmt::format("{:.12f} ({})", e.value, x ? x->texts[k] : "-");
+      return fmt::format("{:.12f} ({:>5})", e.value, x ? x->texts[k] : "-");
     };
-    std::cout << fmt::format("{:<26} {:>20} {:>20} {:>20} {:>20}\n", name, cell(s->value, 0),
+    std::cout << fmt::format("{:<26} {:>26} {:>26} {:>26} {:>26}\n", name, cell(s->value, 0),
                              cell(s->d_a2, 1), cell(s->d_b, 2), cell(s->d_a2b, 3));
   }
 }
