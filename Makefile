@@ -9,7 +9,7 @@ QUICK     ?= 0
 RESULTS   ?= results
 
 # The one list of Debian packages the project needs (build, test, figures, benchmarks, MPI).
-PACKAGES := cmake g++ make git pkg-config ca-certificates \
+PACKAGES := cmake g++ make git pkg-config ca-certificates python3 python3-sympy \
             libgsl-dev libeigen3-dev libboost-test-dev libboost-iostreams-dev \
             libboost-filesystem-dev libboost-system-dev libgnuplot-iostream-dev gnuplot-nox \
             libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev \

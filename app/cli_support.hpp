@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
@@ -24,10 +25,10 @@ class UsageError : public std::runtime_error {
 inline std::string format_interval(double lo, bool lo_closed, double hi, bool hi_closed) {
   auto num = [](double x) {
     if (std::isinf(x)) return std::string(x > 0 ? "inf" : "-inf");
-    std::string s = std::to_string(x);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
+    // Shortest faithful form (1e-13, 0.01, 1000000), not std::to_string's six decimals.
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", x);
+    return std::string(text);
   };
   return std::string(lo_closed ? "[" : "(") + num(lo) + ", " + num(hi) + (hi_closed ? "]" : ")");
 }

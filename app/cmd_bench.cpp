@@ -1,7 +1,8 @@
 // `molchaos bench`: work–precision measurements that need the whole suite (the per-function
 // timings live in bench/ as Google Benchmark programs).
-//  --theory      CPU time of the full μ2 coefficient table against the requested quadrature
-//                tolerance, with the error reached (against the closed forms) and estimated.
+//  --theory      CPU time of the full μ2 coefficient table for the fixed Gauss rules (by order)
+//                and the adaptive reference (by requested tolerance), with the error reached
+//                (against the closed forms) and estimated.
 //  --simulation  error of A for the molecular-chaos (flux) gas, where kinetic theory is exact,
 //                against CPU seconds, as N and the number of seeds vary.
 #include <fmt/format.h>
@@ -14,6 +15,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -40,29 +43,75 @@ struct BenchOptions {
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
+// CPU seconds per call of `work`, repeated until the clock has seen at least 50 ms.
+template <class Work>
+double seconds_per_call(Work&& work) {
+  int calls = 0;
+  const double start = cpu_seconds();
+  double elapsed = 0.0;
+  do {
+    work();
+    ++calls;
+    elapsed = cpu_seconds() - start;
+  } while (elapsed < 0.05);
+  return elapsed / calls;
+}
+
+// One row of the theory work–precision table: the μ2 table (printed dyad, ε = 1/2) with one
+// quadrature setting, its cost and its error against the closed forms.
+struct TheoryRow {
+  std::string method, setting;
+  double seconds = 0.0;
+  theory::reference::TableError error;
+  std::size_t evaluations = 0;
+};
+
+TheoryRow theory_row(int d, const theory::QuadratureOptions& q, std::string method,
+                     std::string setting) {
+  theory::ExpansionTable table;
+  TheoryRow row;
+  row.method = std::move(method);
+  row.setting = std::move(setting);
+  row.seconds =
+      seconds_per_call([&] { table = theory::expand_collision_moment(d, 2, 0.5, 3.0, q); });
+  row.error = theory::reference::table_error(table);
+  row.evaluations = table.integrand_evaluations;
+  return row;
+}
+
 void bench_theory(const BenchOptions& o) {
   std::string csv = fmt::format("# molchaos bench --theory\n# version = {}\n", k_version);
   csv +=
-      "dimension,requested_tolerance,cpu_seconds,max_error_reached,max_error_estimate,integrand_"
+      "dimension,method,setting,cpu_seconds,max_error_reached,max_error_estimate,integrand_"
       "evaluations\n";
-  std::cout << fmt::format("{:>4} {:>10} {:>10} {:>14} {:>14} {:>12}\n", "d", "tolerance",
-                           "cpu [s]", "error reached", "error estim.", "evaluations");
+  std::cout << fmt::format("{:>4} {:>9} {:>16} {:>11} {:>14} {:>14} {:>12}\n", "d", "method",
+                           "setting", "cpu [s]", "error reached", "error estim.", "evaluations");
   for (int d : {2, 3}) {
     validation::WorkPrecisionData data;
-    data.title = fmt::format("mu2 coefficient table, d = {}", d);
+    data.title = fmt::format("mu2 coefficient table, d = {} (adaptive QAGIU)", d);
+    std::vector<TheoryRow> rows;
+    // The reference: nested adaptive QAGIU at requested tolerances.
     for (int k = 4; k <= 12; k += 2) {
       theory::QuadratureOptions q;
+      q.method = theory::QuadratureMethod::adaptive;
       q.relative_tolerance = std::pow(10.0, -k);
-      const double start = cpu_seconds();
-      const auto table = theory::expand_collision_moment(d, 2, 0.5, 3.0, q);
-      const double seconds = cpu_seconds() - start;
-      const auto [reached, estimate] = theory::reference::table_error(table);
-      data.points.push_back({q.relative_tolerance, seconds, reached, estimate});
-      std::cout << fmt::format("{:>4} {:>10.0e} {:>10.3f} {:>14.2e} {:>14.2e} {:>12}\n", d,
-                               q.relative_tolerance, seconds, reached, estimate,
-                               table.integrand_evaluations);
-      csv += fmt::format("{},{:.0e},{:.4f},{:.3e},{:.3e},{}\n", d, q.relative_tolerance, seconds,
-                         reached, estimate, table.integrand_evaluations);
+      rows.push_back(theory_row(d, q, "adaptive", fmt::format("tol {:.0e}", q.relative_tolerance)));
+      data.points.push_back({q.relative_tolerance, rows.back().seconds,
+                             rows.back().error.reached, rows.back().error.estimated});
+    }
+    // The default: Gauss–Laguerre rules of rising order (exact from order 4), exact Hermite sum;
+    // the value is the higher rule's, the estimate its difference to the lower one.
+    for (int order = 1; order <= 5; ++order) {
+      theory::QuadratureOptions q;
+      q.laguerre_order = order;
+      rows.push_back(theory_row(d, q, "gauss", fmt::format("laguerre {}/{}", order, order + 1)));
+    }
+    for (const TheoryRow& r : rows) {
+      std::cout << fmt::format("{:>4} {:>9} {:>16} {:>11.3e} {:>14.2e} {:>14.2e} {:>12}\n", d,
+                               r.method, r.setting, r.seconds, r.error.reached, r.error.estimated,
+                               r.evaluations);
+      csv += fmt::format("{},{},{},{:.4e},{:.3e},{:.3e},{}\n", d, r.method, r.setting, r.seconds,
+                         r.error.reached, r.error.estimated, r.evaluations);
     }
 #ifdef MOLCHAOS_HAVE_FIGURES
     figures::RenderOptions ro;

@@ -3,19 +3,27 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/theory/contact_response.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/dimension.hpp"
+#include "molchaos/theory/exact_values.hpp"
 #include "molchaos/theory/paper_checks.hpp"
+#include "molchaos/theory/sonine.hpp"
+#include "molchaos/theory/sonine_hcs.hpp"
 #include "molchaos/version.hpp"
 
 namespace molchaos::app {
@@ -27,8 +35,17 @@ struct TheoryOptions {
   double density = 0.05;
   double correlation_b = 0.0;
   double tolerance = 1e-10;
+  std::string quadrature = "gauss";
   bool json = false;
 };
+
+theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
+  theory::QuadratureOptions q;
+  q.method = o.quadrature == "adaptive" ? theory::QuadratureMethod::adaptive
+                                        : theory::QuadratureMethod::gauss;
+  q.relative_tolerance = o.tolerance;
+  return q;
+}
 
 nlohmann::json number_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
@@ -49,12 +66,20 @@ nlohmann::json to_json(const theory::PaperCheck& c, const std::string& term) {
   return row;
 }
 
+// The exact form the symbolic derivation gives for a μ2 coefficient ("-" where it has none).
+std::string exact_text(int dimension, double dyad_factor, const std::string& term) {
+  const auto* t = theory::exact::find_moment_term(dimension, 2, dyad_factor, term);
+  return t ? t->coefficient_text : "-";
+}
+
 std::string verdict_text(const theory::PaperCheck& c) {
   if (!c.reproduced) return "-";
   return *c.reproduced ? "reproduced" : "NOT reproduced";
 }
 
-void run_theory(const TheoryOptions& o) {
+// Flag values that are each in range but together describe no gas: density beyond close
+// packing, b outside the range where the ansatz's f2 and μ2 stay positive.
+void validate_theory_inputs(const TheoryOptions& o) {
   try {
     theory::require_density(o.dimension, o.density);
   } catch (const std::invalid_argument&) {
@@ -63,65 +88,161 @@ void run_theory(const TheoryOptions& o) {
                                               o.density, theory::close_packing_density(o.dimension),
                                               o.dimension));
   }
+  const double a2 = theory::a2_first_sonine(o.dimension, o.restitution);
+  const auto range =
+      theory::correlation_b_range(o.dimension, a2, theory::k_paper_dyad_factor, quadrature_of(o));
+  if (!(o.correlation_b >= range.lower && o.correlation_b < range.upper))
+    throw UsageError(
+        "--b", fmt::format("value {} is outside the allowed range [{:.6g}, {:.6g}) for --dim {}, "
+                           "--restitution {} (where the ansatz's f2 at grazing impact, the "
+                           "collision rate and μ2 stay positive)",
+                           o.correlation_b, range.lower, range.upper, o.dimension, o.restitution));
+}
+
+// Everything `molchaos theory` prints, computed once.
+struct TheoryResults {
+  theory::CoolingPrediction prediction;
+  theory::ExpansionTable table, traceless;
+  std::vector<theory::PaperCheck> coefficient_rows, prefactor_rows;
+  theory::CorrelationRange b_range;
+  theory::HcsSonine sonine;
+  std::array<theory::Estimate, 4> A_by_level;  ///< A with each level's a2, a3 (and the given b)
+  theory::ContactResponse contact, contact_traceless;
+  double seconds = 0.0;
+};
+
+std::array<const theory::SonineSolution*, 4> levels(const theory::HcsSonine& h) {
+  return {&h.first_sonine, &h.a2_nonlinear, &h.a2_a3_linear, &h.a2_a3};
+}
+
+TheoryResults compute_theory(const TheoryOptions& o) {
   const auto start = std::chrono::steady_clock::now();
-  theory::QuadratureOptions quad;
-  quad.relative_tolerance = o.tolerance;
+  const theory::QuadratureOptions quad = quadrature_of(o);
+  TheoryResults r;
   theory::CoolingInputs inputs;
   inputs.dimension = o.dimension;
   inputs.density = o.density;
   inputs.restitution = o.restitution;
   inputs.correlation_b = o.correlation_b;
   inputs.quadrature = quad;
-  const theory::CoolingPrediction p = theory::predict_cooling(inputs);
+  r.prediction = theory::predict_cooling(inputs);
   // Coefficients are ε-independent for μ2; evaluated at ε = 1/2 so that ε = 1 input works too.
-  const auto table =
-      theory::expand_collision_moment(o.dimension, 2, 0.5, theory::k_paper_dyad_factor, quad);
+  r.table = theory::expand_collision_moment(o.dimension, 2, 0.5, theory::k_paper_dyad_factor, quad);
   // The printed dyad 3·ee − U is traceless only in d = 3; in d = 2 the traceless one is 2·ee − U.
-  const auto traceless =
-      o.dimension == 3 ? table
-                       : theory::expand_collision_moment(o.dimension, 2, 0.5, o.dimension, quad);
-  const auto coefficient_rows = theory::coefficient_checks(table);
-  const auto prefactor_rows = theory::prefactor_checks(o.dimension, quad);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  if (o.json) {
-    nlohmann::json j;
-    j["version"] = k_version;
-    j["inputs"] = {{"dim", o.dimension},
-                   {"restitution", o.restitution},
-                   {"density", o.density},
-                   {"b", o.correlation_b},
-                   {"initial_temperature", 1.0},
-                   {"tolerance", o.tolerance},
-                   {"units", "sigma = m = k_B = 1; T = m<v^2>/d"}};
-    j["packing_fraction"] = p.packing_fraction;
-    j["g2"] = p.g2;
-    j["a2"] = p.a2;
-    j["mu2"] = p.mu2.value;
-    j["mu2_error"] = p.mu2.error;
-    j["mu2_ratio"] = p.mu2_ratio.value;
-    j["omega0"] = p.omega0;
-    j["tau0"] = number_or_null(p.tau0.value);
-    j["tau0_error"] = number_or_null(p.tau0.value).is_null() ? nlohmann::json(nullptr)
-                                                             : nlohmann::json(p.tau0.error);
-    j["A"] = p.A.value;
-    j["A_error"] = p.A.error;
-    j["A_uncorrelated"] = p.A_uncorrelated.value;
-    j["enskog_collision_frequency"] = p.enskog_collision_frequency;
-    j["coefficients"] = nlohmann::json::array();
-    for (std::size_t i = 0; i < coefficient_rows.size(); ++i)
-      j["coefficients"].push_back(to_json(coefficient_rows[i], table.terms[i].name));
-    j["coefficients_traceless_dyad"] = nlohmann::json::array();
-    for (const auto& t : traceless.terms)
-      j["coefficients_traceless_dyad"].push_back(
-          {{"term", t.name}, {"computed", t.coefficient.value}, {"error", t.coefficient.error}});
-    j["prefactors"] = nlohmann::json::array();
-    for (const auto& row : prefactor_rows) j["prefactors"].push_back(to_json(row, ""));
-    j["seconds"] = seconds;
-    std::cout << j.dump(2) << '\n';
-    return;
+  r.traceless = o.dimension == 3
+                    ? r.table
+                    : theory::expand_collision_moment(o.dimension, 2, 0.5, o.dimension, quad);
+  r.coefficient_rows = theory::coefficient_checks(r.table);
+  r.prefactor_rows = theory::prefactor_checks(o.dimension, quad);
+  r.b_range =
+      theory::correlation_b_range(o.dimension, r.prediction.a2, theory::k_paper_dyad_factor, quad);
+  // The second-order Sonine theory and the contact response always use the exact Gauss rules
+  // (the adaptive check of these 2 × 12 + 12 terms would take minutes; the tests run it).
+  const theory::QuadratureOptions gauss;
+  r.sonine = theory::hcs_sonine_coefficients(o.dimension, o.restitution, gauss);
+  const auto with_a3 = theory::expand_collision_moment(
+      o.dimension, 2, 0.5, theory::k_paper_dyad_factor, gauss, theory::SonineTerms::a2_a3);
+  const auto lv = levels(r.sonine);
+  for (std::size_t i = 0; i < lv.size(); ++i) {
+    const theory::PairShape shape{lv[i]->a2.value, lv[i]->a3.value, o.correlation_b};
+    const theory::Estimate ratio = with_a3.ratio_estimate(shape);
+    // The Sonine coefficients' own errors carried through ∂ratio/∂a (central differences of an
+    // exactly quadratic polynomial).
+    const double h = 1e-3;
+    auto slope = [&](double da2, double da3) {
+      const theory::PairShape up{shape.a2 + da2, shape.a3 + da3, shape.b};
+      const theory::PairShape down{shape.a2 - da2, shape.a3 - da3, shape.b};
+      return std::abs(with_a3.ratio(up) - with_a3.ratio(down)) / (2.0 * h);
+    };
+    const double ratio_error =
+        ratio.error + slope(h, 0.0) * lv[i]->a2.error + slope(0.0, h) * lv[i]->a3.error;
+    const double A = 1.0 / (r.prediction.omega0 * ratio.value);
+    r.A_by_level[i] = {A, std::abs(A) * ratio_error / std::abs(ratio.value)};
   }
+  r.contact = theory::contact_response(o.dimension, theory::k_paper_dyad_factor, gauss);
+  r.contact_traceless = theory::contact_response(o.dimension, o.dimension, gauss);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+nlohmann::json to_json(const theory::Estimate& e) {
+  return {{"value", e.value}, {"error", e.error}};
+}
+
+nlohmann::json to_json(const theory::ContactResponse& c) {
+  nlohmann::json j;
+  j["dyad_factor"] = c.dyad_factor;
+  const std::pair<const char*, const theory::ResponseSeries*> rows[] = {
+      {"normal_product", &c.normal_product},
+      {"velocity_product", &c.velocity_product},
+      {"dyad", &c.dyad},
+      {"collision_frequency_ratio", &c.collision_frequency_ratio},
+      {"dissipation_ratio", &c.dissipation_ratio}};
+  for (const auto& [name, s] : rows) {
+    const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
+    j[name] = {{"value", to_json(s->value)},
+               {"d_a2", to_json(s->d_a2)},
+               {"d_b", to_json(s->d_b)},
+               {"d_a2b", to_json(s->d_a2b)}};
+    if (x) j[name]["exact"] = {x->texts[0], x->texts[1], x->texts[2], x->texts[3]};
+  }
+  return j;
+}
+
+void print_theory_json(const TheoryOptions& o, const TheoryResults& r) {
+  const auto& p = r.prediction;
+  nlohmann::json j;
+  j["version"] = k_version;
+  j["inputs"] = {{"dim", o.dimension},         {"restitution", o.restitution},
+                 {"density", o.density},       {"b", o.correlation_b},
+                 {"initial_temperature", 1.0}, {"quadrature", o.quadrature},
+                 {"tolerance", o.tolerance},   {"units", "sigma = m = k_B = 1; T = m<v^2>/d"}};
+  j["packing_fraction"] = p.packing_fraction;
+  j["g2"] = p.g2;
+  j["a2"] = p.a2;
+  j["mu2"] = p.mu2.value;
+  j["mu2_error"] = p.mu2.error;
+  j["mu2_ratio"] = p.mu2_ratio.value;
+  j["omega0"] = p.omega0;
+  j["tau0"] = number_or_null(p.tau0.value);
+  j["tau0_error"] = number_or_null(p.tau0.value).is_null() ? nlohmann::json(nullptr)
+                                                           : nlohmann::json(p.tau0.error);
+  j["A"] = p.A.value;
+  j["A_error"] = p.A.error;
+  j["A_uncorrelated"] = p.A_uncorrelated.value;
+  j["enskog_collision_frequency"] = p.enskog_collision_frequency;
+  j["b_range"] = {{"lower", r.b_range.lower}, {"upper", number_or_null(r.b_range.upper)}};
+  j["coefficients"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
+    j["coefficients"].push_back(to_json(r.coefficient_rows[i], r.table.terms[i].name));
+    j["coefficients"].back()["exact"] =
+        exact_text(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name);
+  }
+  j["coefficients_traceless_dyad"] = nlohmann::json::array();
+  for (const auto& t : r.traceless.terms)
+    j["coefficients_traceless_dyad"].push_back(
+        {{"term", t.name},
+         {"computed", t.coefficient.value},
+         {"error", t.coefficient.error},
+         {"exact", exact_text(o.dimension, o.dimension, t.name)}});
+  j["prefactors"] = nlohmann::json::array();
+  for (const auto& row : r.prefactor_rows) j["prefactors"].push_back(to_json(row, ""));
+  j["sonine"] = nlohmann::json::array();
+  const auto lv = levels(r.sonine);
+  for (std::size_t i = 0; i < lv.size(); ++i)
+    j["sonine"].push_back({{"level", lv[i]->level},
+                           {"a2", to_json(lv[i]->a2)},
+                           {"a3", to_json(lv[i]->a3)},
+                           {"mu2_ratio", to_json(lv[i]->mu2_ratio)},
+                           {"A", to_json(r.A_by_level[i])}});
+  j["contact_response"] = {{"printed_dyad", to_json(r.contact)},
+                           {"traceless_dyad", to_json(r.contact_traceless)}};
+  j["seconds"] = r.seconds;
+  std::cout << j.dump(2) << '\n';
+}
+
+void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
+  const auto& p = r.prediction;
   std::cout << fmt::format("molchaos {} — kinetic theory, d = {}, ε = {}, n = {}, b = {}\n",
                            k_version, o.dimension, o.restitution, o.density, o.correlation_b);
   std::cout << "units: σ = m = k_B = 1, T0 = 1, T = m<v²>/d\n\n";
@@ -136,27 +257,89 @@ void run_theory(const TheoryOptions& o) {
   std::cout << fmt::format("  A = τ0(1-ε²)         {:.10g} ± {:.2g}\n", p.A.value, p.A.error);
   std::cout << fmt::format("  A (b = 0)            {:.10g} ± {:.2g}\n", p.A_uncorrelated.value,
                            p.A_uncorrelated.error);
-  std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n\n", p.enskog_collision_frequency);
-  std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9}  {}\n", "μ2/μ2(0,0) coefficient", "paper",
-                           "computed", "error", "verdict");
-  for (const auto& r : coefficient_rows)
-    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}  {}\n", r.quantity,
-                             r.paper ? fmt::format("{:.6f}", *r.paper) : "-", r.computed, r.error,
-                             verdict_text(r));
+  std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n", p.enskog_collision_frequency);
+  std::cout << fmt::format("  allowed b            [{:.6g}, {:.6g})\n\n", r.b_range.lower,
+                           r.b_range.upper);
+}
+
+void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
+  std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9} {:>10}  {}\n", "μ2/μ2(0,0) coefficient",
+                           "paper", "computed", "error", "exact", "verdict");
+  for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
+    const auto& c = r.coefficient_rows[i];
+    std::cout << fmt::format(
+        "{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}  {}\n", c.quantity,
+        c.paper ? fmt::format("{:.6f}", *c.paper) : "-", c.computed, c.error,
+        exact_text(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name),
+        verdict_text(c));
+  }
   std::cout << (o.dimension == 3
                     ? std::string("\nthe printed dyad 3·ee − U is already traceless in d = 3:\n")
                     : std::string(
                           "\ntraceless dyad (2·ee − U) instead of the printed 3·ee − U:\n"));
-  for (const auto& t : traceless.terms)
-    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e}\n", "μ2 coefficient of " + t.name,
-                             "-", t.coefficient.value, t.coefficient.error);
+  for (const auto& t : r.traceless.terms)
+    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}\n",
+                             "μ2 coefficient of " + t.name, "-", t.coefficient.value,
+                             t.coefficient.error, exact_text(o.dimension, o.dimension, t.name));
   std::cout << fmt::format("\n{:<52} {:>10} {:>14} {:>9}  {}\n", "prefactor", "paper", "computed",
                            "error", "verdict");
-  for (const auto& r : prefactor_rows)
-    std::cout << fmt::format("{:<52} {:>10.6f} {:>14.10f} {:>9.1e}  {}\n", r.quantity,
-                             r.paper.value_or(std::nan("")), r.computed, r.error, verdict_text(r));
-  std::cout << fmt::format("\ncomputed in {:.3f} s (quadrature tolerance {:g})\n", seconds,
-                           o.tolerance);
+  for (const auto& c : r.prefactor_rows)
+    std::cout << fmt::format("{:<52} {:>10.6f} {:>14.10f} {:>9.1e}  {}\n", c.quantity,
+                             c.paper.value_or(std::nan("")), c.computed, c.error, verdict_text(c));
+}
+
+void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
+  std::cout << fmt::format(
+      "\nhomogeneous cooling state beyond the first Sonine term (b = {}):\n{:<14} {:>22} "
+      "{:>22} {:>22}\n",
+      o.correlation_b, "level", "a2", "a3", "A");
+  const auto lv = levels(r.sonine);
+  for (std::size_t i = 0; i < lv.size(); ++i)
+    std::cout << fmt::format(
+        "{:<14} {:>13.10f} ± {:<6.1e} {:>13.10f} ± {:<6.1e} {:>13.9f} ± {:<6.1e}\n", lv[i]->level,
+        lv[i]->a2.value, lv[i]->a2.error, lv[i]->a3.value, lv[i]->a3.error, r.A_by_level[i].value,
+        r.A_by_level[i].error);
+}
+
+void print_contact_text(const theory::ContactResponse& c) {
+  std::cout << fmt::format(
+      "\ncolliding pairs under f2 = f f g2 [1 + b D], D = {}·ee − U, to first order:\n"
+      "{:<26} {:>26} {:>26} {:>26} {:>26}\n",
+      c.dyad_factor, "quantity", "value (exact)", "∂/∂a2", "∂/∂b", "∂²/∂a2∂b");
+  const std::pair<const char*, const theory::ResponseSeries*> rows[] = {
+      {"normal_product", &c.normal_product},
+      {"velocity_product", &c.velocity_product},
+      {"dyad", &c.dyad},
+      {"collision_frequency_ratio", &c.collision_frequency_ratio},
+      {"dissipation_ratio", &c.dissipation_ratio}};
+  for (const auto& [name, s] : rows) {
+    const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
+    auto cell = [&](const theory::Estimate& e, int k) {
+      return fmt::format("{:.12f} ({:>5})", e.value, x ? x->texts[k] : "-");
+    };
+    std::cout << fmt::format("{:<26} {:>26} {:>26} {:>26} {:>26}\n", name, cell(s->value, 0),
+                             cell(s->d_a2, 1), cell(s->d_b, 2), cell(s->d_a2b, 3));
+  }
+}
+
+void print_theory_text(const TheoryOptions& o, const TheoryResults& r) {
+  print_prediction_text(o, r);
+  print_coefficients_text(o, r);
+  print_sonine_text(o, r);
+  print_contact_text(r.contact);
+  if (o.dimension == 2) print_contact_text(r.contact_traceless);
+  std::cout << fmt::format(
+      "\ncomputed in {:.3f} s ({} quadrature{})\n", r.seconds, o.quadrature,
+      o.quadrature == "adaptive" ? fmt::format(", tolerance {:g}", o.tolerance) : std::string());
+}
+
+void run_theory(const TheoryOptions& o) {
+  validate_theory_inputs(o);
+  const TheoryResults r = compute_theory(o);
+  if (o.json)
+    print_theory_json(o, r);
+  else
+    print_theory_text(o, r);
 }
 
 }  // namespace
@@ -174,11 +357,19 @@ void add_theory_command(CLI::App& app) {
   cmd->add_option("--density", options->density, "reduced density n = Nσ^d/V")
       ->check(real_in(0.0, false, std::numeric_limits<double>::infinity(), false))
       ->capture_default_str();
-  cmd->add_option("--b", options->correlation_b, "velocity-correlation coefficient b")
-      ->check(real_in(-1.0, true, 1.0, true))
+  cmd->add_option("--b", options->correlation_b,
+                  "velocity-correlation coefficient b (range: where f2 and μ2 stay positive)")
+      ->check(real_in(-std::numeric_limits<double>::infinity(), false,
+                      std::numeric_limits<double>::infinity(), false))
       ->capture_default_str();
-  cmd->add_option("--tolerance", options->tolerance, "relative quadrature tolerance")
-      ->check(real_in(1e-13, true, 1e-2, true))
+  cmd->add_option("--quadrature", options->quadrature,
+                  "gauss (exact fixed rules) or adaptive (GSL QAGIU, the independent check)")
+      ->check(CLI::IsMember({"gauss", "adaptive"}))
+      ->capture_default_str();
+  cmd->add_option("--tolerance", options->tolerance,
+                  "relative tolerance of the adaptive quadrature")
+      ->check(
+          real_in(theory::k_min_relative_tolerance, true, theory::k_max_relative_tolerance, true))
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
   cmd->callback([options] { run_theory(*options); });

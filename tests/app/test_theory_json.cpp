@@ -1,5 +1,6 @@
 // `molchaos theory --json` for d = 2 and 3: one complete JSON document with the inputs, the
-// predictions and the coefficient rows the issue names, with the verdicts the integral implies.
+// predictions, the coefficient rows, the Sonine levels and the contact response, with the verdicts
+// the integral implies.
 #define BOOST_TEST_MODULE cli_theory_json
 #include <boost/test/unit_test.hpp>
 #include <cmath>
@@ -53,4 +54,34 @@ BOOST_AUTO_TEST_CASE(elastic_input_gives_null_tau0) {
   const auto j = run("--dim 2 --restitution 1 --density 0.1");
   BOOST_TEST(j.at("tau0").is_null());
   BOOST_TEST(j.at("A").is_number());
+}
+
+BOOST_AUTO_TEST_CASE(sonine_levels_contact_response_and_b_range) {
+  for (int d : {2, 3}) {
+    const auto j = run("--dim " + std::to_string(d) + " --restitution 0.6 --b 0.05");
+    // Four Sonine levels side by side; the first is van Noije & Ernst's a2 (as "a2" above).
+    const auto& levels = j.at("sonine");
+    BOOST_TEST(levels.size() == 4u);
+    BOOST_TEST(levels.at(0).at("level") == "first_sonine");
+    const double a2_level = levels.at(0).at("a2").at("value").get<double>();
+    BOOST_TEST(std::abs(a2_level - j.at("a2").get<double>()) <=
+               3.0 * levels.at(0).at("a2").at("error").get<double>() + 1e-15);
+    BOOST_TEST(levels.at(0).at("a3").at("value").get<double>() == 0.0);
+    BOOST_TEST(levels.at(3).at("level") == "a2_a3");
+    BOOST_TEST(levels.at(3).at("a3").at("value").get<double>() < 0.0);  // a3 < 0 at ε = 0.6
+    // The first level's A is the prediction's A (same a2 up to its error, same b).
+    BOOST_TEST(std::abs(levels.at(0).at("A").at("value").get<double>() - j.at("A").get<double>()) <=
+               levels.at(0).at("A").at("error").get<double>() + j.at("A_error").get<double>());
+    for (const auto& l : levels)
+      for (const char* k : {"a2", "a3", "mu2_ratio", "A"}) BOOST_TEST(l.at(k).at("error") >= 0.0);
+    // Contact response with its exact forms; molecular chaos ⟨D⟩ = −1/2 for the printed dyad.
+    const auto& dyad = j.at("contact_response").at("printed_dyad").at("dyad");
+    BOOST_TEST(std::abs(dyad.at("value").at("value").get<double>() + 0.5) <= 1e-12);
+    BOOST_TEST(dyad.at("exact").at(0) == "-1/2");
+    // The allowed range of b contains the input and excludes the zero of μ2.
+    BOOST_TEST(j.at("b_range").at("lower").get<double>() == -2.0);
+    BOOST_TEST(j.at("b_range").at("upper").get<double>() > 0.05);
+    BOOST_TEST(j.at("A_error").get<double>() >= 0.0);
+    BOOST_TEST(j.at("tau0_error").get<double>() >= 0.0);
+  }
 }

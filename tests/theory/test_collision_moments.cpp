@@ -8,11 +8,12 @@
 
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/gauss_rules.hpp"
 
 using namespace molchaos::theory;
 
 namespace {
-constexpr double k_rel = 1e-9;  // the bound on every coefficient and closed form
+constexpr double k_rel = 1e-9;  // the agreement asked of every coefficient and closed form
 QuadratureOptions tight() {
   QuadratureOptions q;
   q.relative_tolerance = 1e-11;
@@ -144,8 +145,27 @@ BOOST_AUTO_TEST_CASE(bad_arguments) {
   BOOST_CHECK_THROW(collision_moment(2, 2, 1.5, 0, 0, 3), std::invalid_argument);
   BOOST_CHECK_THROW(expand_collision_moment(2, 2, 1.0, 3), std::invalid_argument);
   QuadratureOptions q;
+  q.method = QuadratureMethod::adaptive;
   q.relative_tolerance = 0.0;
   BOOST_CHECK_THROW(mu2(2, 0.5, 0, 0, q), std::invalid_argument);
+  q.relative_tolerance = 0.5 * k_min_relative_tolerance;
+  BOOST_CHECK_THROW(mu2(2, 0.5, 0, 0, q), std::invalid_argument);
+  BOOST_CHECK_THROW(collision_moment(2, 8, 0.5, 0, 0, 3), std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_CASE(gauss_error_estimate_detects_too_low_orders) {
+  // Laguerre rules below the exact order are wrong for the highest-degree terms, and the estimate
+  // (difference to the next order) must cover the true error (closed form 93/2048).
+  QuadratureOptions low;
+  low.laguerre_order = 2;
+  const ExpansionTable t = expand_collision_moment(2, 2, 0.7, k_paper_dyad_factor, low);
+  const Estimate& c = t.term("a2^2*b").coefficient;
+  BOOST_TEST(std::abs(c.value - 93.0 / 2048) > 1e-8);
+  BOOST_TEST(std::abs(c.value - 93.0 / 2048) <= c.error);
+  // At the exact order the estimate is at rounding level.
+  const ExpansionTable exact = expand_collision_moment(2, 2, 0.7, k_paper_dyad_factor);
+  BOOST_TEST(exact.term("a2^2*b").coefficient.error <= 1e-13);
+  BOOST_TEST(exact.term("a2^2*b").coefficient.error >= 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(contact_integrals_closed_forms) {

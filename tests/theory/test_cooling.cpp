@@ -7,6 +7,7 @@
 
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/theory/sonine.hpp"
 
@@ -92,4 +93,55 @@ BOOST_AUTO_TEST_CASE(paper_verdicts) {
   BOOST_TEST(!pre.at(1).reproduced.value());  // 1/3 printed, 1/2 derived for disks
   const auto pre3 = prefactor_checks(3, q);
   BOOST_TEST(pre3.at(1).reproduced.value());  // 1/3 is the d = 3 value
+}
+
+BOOST_AUTO_TEST_CASE(b_range_where_f2_and_mu2_stay_positive) {
+  // Upper end: μ2(a2, b) = 0, i.e. b = (1 + 3/16 a2 + 9/1024 a2²)/(3/2 + 21/32 a2 − 93/2048 a2²)
+  // (exact coefficients, printed dyad); lower end −4/(κ − 1) = −2 (grazing collisions).
+  for (int d : {2, 3})
+    for (double eps : {0.3, 0.9}) {
+      const double a2 = a2_first_sonine(d, eps);
+      const CorrelationRange r = correlation_b_range(d, a2, k_paper_dyad_factor);
+      const double upper = (1 + 3.0 / 16 * a2 + 9.0 / 1024 * a2 * a2) /
+                           (1.5 + 21.0 / 32 * a2 - 93.0 / 2048 * a2 * a2);
+      BOOST_TEST(std::abs(r.upper - upper) <= 1e-12);
+      BOOST_TEST(r.lower == -2.0);
+      CoolingInputs in;
+      in.dimension = d;
+      in.restitution = eps;
+      in.correlation_b = r.upper;  // μ2 = 0: no finite τ0
+      BOOST_CHECK_THROW(predict_cooling(in), std::invalid_argument);
+      in.correlation_b = r.lower - 1e-9;
+      BOOST_CHECK_THROW(predict_cooling(in), std::invalid_argument);
+    }
+  // The traceless 2D dyad (κ = 2): lower end −4, upper 4/3 at a2 = 0 (b coefficient −3/4).
+  const CorrelationRange t = correlation_b_range(2, 0.0, 2.0);
+  BOOST_TEST(t.lower == -4.0);
+  BOOST_TEST(std::abs(t.upper - 4.0 / 3.0) <= 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(error_estimates_are_magnitudes) {
+  // Over the whole allowed range of b (both signs, up to just below μ2 = 0) and ε, every error
+  // estimate of the prediction is non-negative and A, τ0 positive.
+  for (int d : {2, 3})
+    for (double eps : {0.2, 0.9, 1.0}) {
+      const double a2 = a2_first_sonine(d, eps);
+      const CorrelationRange r = correlation_b_range(d, a2, k_paper_dyad_factor);
+      for (double f : {0.0, 0.3, 0.999, 0.999999}) {
+        for (double b : {r.lower * f, r.upper * f}) {
+          CoolingInputs in;
+          in.dimension = d;
+          in.restitution = eps;
+          in.correlation_b = b;
+          const CoolingPrediction p = predict_cooling(in);
+          BOOST_TEST_INFO("d = " << d << ", eps = " << eps << ", b = " << b);
+          BOOST_TEST(p.A.value > 0.0);
+          BOOST_TEST(p.A.error >= 0.0);
+          BOOST_TEST(p.tau0.error >= 0.0);
+          BOOST_TEST(p.mu2.error >= 0.0);
+          BOOST_TEST(p.mu2_ratio.error >= 0.0);
+          BOOST_TEST(p.A_uncorrelated.error >= 0.0);
+        }
+      }
+    }
 }

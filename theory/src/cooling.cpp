@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "molchaos/theory/contact_value.hpp"
+#include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/theory/sonine.hpp"
 
@@ -43,33 +44,32 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   out.enskog_collision_frequency =
       enskog_collision_frequency(in.dimension, in.density, in.initial_temperature);
 
-  // μ2 and μ2(0,0) by quadrature; their ratio does not depend on ε (Δ(c1² + c2²) ∝ 1 − ε²),
-  // so at ε = 1, where both vanish, it is taken at ε = 1/2.
-  out.mu2 = collision_moment(in.dimension, 2, in.restitution, out.a2, in.correlation_b,
-                             in.dyad_factor, in.quadrature);
-  const double eps_ratio = in.restitution < 1.0 ? in.restitution : 0.5;
-  const Estimate full = in.restitution < 1.0
-                            ? out.mu2
-                            : collision_moment(in.dimension, 2, eps_ratio, out.a2, in.correlation_b,
-                                               in.dyad_factor, in.quadrature);
-  const Estimate base =
-      collision_moment(in.dimension, 2, eps_ratio, 0.0, 0.0, in.dyad_factor, in.quadrature);
-  const Estimate uncorrelated = in.correlation_b == 0.0
-                                    ? full
-                                    : collision_moment(in.dimension, 2, eps_ratio, out.a2, 0.0,
-                                                       in.dyad_factor, in.quadrature);
-  out.mu2_ratio = divide(full, base);
-  const Estimate ratio_uncorrelated = divide(uncorrelated, base);
+  // One table of μ2's terms (exact Gauss rules, or adaptive when asked): μ2(a2, b)/μ2(0,0) does
+  // not depend on ε (Δ(c1² + c2²) ∝ 1 − ε²), so at ε = 1, where both vanish, it is taken at 1/2.
+  const double eps_table = in.restitution < 1.0 ? in.restitution : 0.5;
+  const ExpansionTable table =
+      expand_collision_moment(in.dimension, 2, eps_table, in.dyad_factor, in.quadrature);
+  require_correlation_b(table, out.a2, in.correlation_b, in.quadrature);
+  out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b});
+  const Estimate ratio_uncorrelated = table.ratio_estimate(PairShape{out.a2, 0.0, 0.0});
+  if (in.restitution < 1.0) {
+    const double base = table.base.value;
+    out.mu2 = {base * out.mu2_ratio.value, std::abs(base) * out.mu2_ratio.error +
+                                               table.base.error * std::abs(out.mu2_ratio.value)};
+  } else {
+    out.mu2 = {0.0, 0.0};  // elastic: no dissipation
+  }
 
   // A = 1/(ω0 μ2/μ2(0,0)): independent of ε except through a2 and b.
+  // Errors are magnitudes: the relative error of the ratio carries over to A.
   out.A = {1.0 / (out.omega0 * out.mu2_ratio.value),
-           out.mu2_ratio.relative_error() / (out.omega0 * out.mu2_ratio.value)};
+           out.mu2_ratio.relative_error() / std::abs(out.omega0 * out.mu2_ratio.value)};
   out.A_uncorrelated = {
       1.0 / (out.omega0 * ratio_uncorrelated.value),
-      ratio_uncorrelated.relative_error() / (out.omega0 * ratio_uncorrelated.value)};
+      ratio_uncorrelated.relative_error() / std::abs(out.omega0 * ratio_uncorrelated.value)};
   if (in.restitution < 1.0) {
     const double one_minus_eps2 = 1.0 - in.restitution * in.restitution;
-    out.tau0 = {out.A.value / one_minus_eps2, out.A.error / one_minus_eps2};
+    out.tau0 = {out.A.value / one_minus_eps2, std::abs(out.A.error / one_minus_eps2)};
   } else {
     out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
   }

@@ -1,4 +1,4 @@
-// Second Sonine polynomial and the first-Sonine a2(ε) in d dimensions.
+// Second and third Sonine polynomials and the first-Sonine a2(ε) in d dimensions.
 #include "molchaos/theory/sonine.hpp"
 
 #include "molchaos/theory/dimension.hpp"
@@ -8,6 +8,12 @@ namespace molchaos::theory {
 double sonine_s2(int dimension, double x) {
   const double d = dimension;
   return 0.5 * x * x - 0.5 * (d + 2.0) * x + d * (d + 2.0) / 8.0;
+}
+
+double sonine_s3(int dimension, double x) {
+  const double d = dimension;
+  return -x * x * x / 6.0 + 0.25 * (d + 4.0) * x * x - 0.125 * (d + 2.0) * (d + 4.0) * x +
+         d * (d + 2.0) * (d + 4.0) / 48.0;
 }
 
 double a2_first_sonine(int dimension, double restitution) {
