@@ -17,6 +17,7 @@
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/version.hpp"
+#include "theory_hydrodynamics_output.hpp"
 
 namespace molchaos::app {
 namespace {
@@ -54,7 +55,7 @@ std::string verdict_text(const theory::PaperCheck& c) {
   return *c.reproduced ? "reproduced" : "NOT reproduced";
 }
 
-void run_theory(const TheoryOptions& o) {
+void run_theory(const TheoryOptions& o, const HydrodynamicsOptions& h) {
   try {
     theory::require_density(o.dimension, o.density);
   } catch (const std::invalid_argument&) {
@@ -118,6 +119,7 @@ void run_theory(const TheoryOptions& o) {
           {{"term", t.name}, {"computed", t.coefficient.value}, {"error", t.coefficient.error}});
     j["prefactors"] = nlohmann::json::array();
     for (const auto& row : prefactor_rows) j["prefactors"].push_back(to_json(row, ""));
+    add_hydrodynamics_json(j, o.dimension, o.restitution, o.density, h);
     j["seconds"] = seconds;
     std::cout << j.dump(2) << '\n';
     return;
@@ -155,6 +157,7 @@ void run_theory(const TheoryOptions& o) {
   for (const auto& r : prefactor_rows)
     std::cout << fmt::format("{:<52} {:>10.6f} {:>14.10f} {:>9.1e}  {}\n", r.quantity,
                              r.paper.value_or(std::nan("")), r.computed, r.error, verdict_text(r));
+  std::cout << hydrodynamics_text(o.dimension, o.restitution, o.density, h);
   std::cout << fmt::format("\ncomputed in {:.3f} s (quadrature tolerance {:g})\n", seconds,
                            o.tolerance);
 }
@@ -181,7 +184,8 @@ void add_theory_command(CLI::App& app) {
       ->check(real_in(1e-13, true, 1e-2, true))
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
-  cmd->callback([options] { run_theory(*options); });
+  auto hydrodynamics = add_hydrodynamics_options(*cmd);
+  cmd->callback([options, hydrodynamics] { run_theory(*options, *hydrodynamics); });
 }
 
 }  // namespace molchaos::app
