@@ -66,6 +66,11 @@ BOOST_AUTO_TEST_CASE(elastic_gas_structure_factors) {
   }
   // S(k) at |m|² ≤ 2 (kσ ≤ 0.13) against S(0) = 1/C: the O(k²σ²) difference (≲ 1 %) is below
   // the standard error (≈ 3 %).
+  BOOST_TEST_MESSAGE("S(k→0) " << low_k_density.mean() << " ± " << low_k_density.standard_error()
+                               << ", S∥ " << longitudinal.mean() << " ± "
+                               << longitudinal.standard_error() << ", S⊥ " << transverse.mean()
+                               << " ± " << transverse.standard_error() << ", T_flow/noise "
+                               << flow.mean() << " ± " << flow.standard_error());
   const double s0 = 1.0 / theory::transport_coefficients({2, density, 1.0, 0.0}).compressibility;
   BOOST_TEST(std::abs(low_k_density.mean() - s0) <= 3 * low_k_density.standard_error(),
              "S(k→0) " << low_k_density.mean() << " ± " << low_k_density.standard_error()
