@@ -25,6 +25,7 @@
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/theory/sonine_hcs.hpp"
 #include "molchaos/version.hpp"
+#include "theory_hydrodynamics_output.hpp"
 
 namespace molchaos::app {
 namespace {
@@ -189,7 +190,8 @@ nlohmann::json to_json(const theory::ContactResponse& c) {
   return j;
 }
 
-void print_theory_json(const TheoryOptions& o, const TheoryResults& r) {
+void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
+                       const HydrodynamicsOptions& h) {
   const auto& p = r.prediction;
   nlohmann::json j;
   j["version"] = k_version;
@@ -237,6 +239,7 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r) {
                            {"A", to_json(r.A_by_level[i])}});
   j["contact_response"] = {{"printed_dyad", to_json(r.contact)},
                            {"traceless_dyad", to_json(r.contact_traceless)}};
+  add_hydrodynamics_json(j, o.dimension, o.restitution, o.density, h);
   j["seconds"] = r.seconds;
   std::cout << j.dump(2) << '\n';
 }
@@ -322,24 +325,26 @@ void print_contact_text(const theory::ContactResponse& c) {
   }
 }
 
-void print_theory_text(const TheoryOptions& o, const TheoryResults& r) {
+void print_theory_text(const TheoryOptions& o, const TheoryResults& r,
+                       const HydrodynamicsOptions& h) {
   print_prediction_text(o, r);
   print_coefficients_text(o, r);
   print_sonine_text(o, r);
   print_contact_text(r.contact);
   if (o.dimension == 2) print_contact_text(r.contact_traceless);
+  std::cout << hydrodynamics_text(o.dimension, o.restitution, o.density, h);
   std::cout << fmt::format(
       "\ncomputed in {:.3f} s ({} quadrature{})\n", r.seconds, o.quadrature,
       o.quadrature == "adaptive" ? fmt::format(", tolerance {:g}", o.tolerance) : std::string());
 }
 
-void run_theory(const TheoryOptions& o) {
+void run_theory(const TheoryOptions& o, const HydrodynamicsOptions& h) {
   validate_theory_inputs(o);
   const TheoryResults r = compute_theory(o);
   if (o.json)
-    print_theory_json(o, r);
+    print_theory_json(o, r, h);
   else
-    print_theory_text(o, r);
+    print_theory_text(o, r, h);
 }
 
 }  // namespace
@@ -372,7 +377,8 @@ void add_theory_command(CLI::App& app) {
           real_in(theory::k_min_relative_tolerance, true, theory::k_max_relative_tolerance, true))
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
-  cmd->callback([options] { run_theory(*options); });
+  auto hydrodynamics = add_hydrodynamics_options(*cmd);
+  cmd->callback([options, hydrodynamics] { run_theory(*options, *hydrodynamics); });
 }
 
 }  // namespace molchaos::app

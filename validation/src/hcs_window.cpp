@@ -1,7 +1,51 @@
 // Fit-window rule: transient by collision count, end by the break-down indicators.
 #include "molchaos/validation/hcs_window.hpp"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace molchaos::validation {
+
+double gamma_upper_tail(int terms, double y) {
+  if (terms < 1) throw std::invalid_argument("terms: must be at least 1");
+  if (y <= 0.0) return 1.0;
+  double term = 1.0, sum = 1.0;
+  for (int j = 1; j < terms; ++j) {
+    term *= y / j;
+    sum += term;
+  }
+  return std::exp(-y) * sum;
+}
+
+double gamma_upper_quantile(int terms, double probability) {
+  if (!(probability > 0.0 && probability < 1.0))
+    throw std::invalid_argument("probability: value " + std::to_string(probability) +
+                                " is outside the allowed range (0, 1)");
+  // The tail falls monotonically from 1 at y = 0; bracket, then bisect.
+  double lo = 0.0, hi = 1.0;
+  while (gamma_upper_tail(terms, hi) > probability) hi *= 2.0;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (gamma_upper_tail(terms, mid) > probability ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+ModeThresholds equilibrium_mode_thresholds(int dimension, double per_sample) {
+  if (dimension != 2 && dimension != 3)
+    throw std::invalid_argument("dimension: value " + std::to_string(dimension) +
+                                " is not allowed; allowed values 2 or 3");
+  const int d = dimension;
+  return {gamma_upper_quantile(d, per_sample) / d,
+          gamma_upper_quantile(d * d, per_sample) / (d * d)};
+}
+
+ModeThresholds WindowRule::default_thresholds() {
+  static const ModeThresholds t =
+      equilibrium_mode_thresholds(2, k_false_alarm_per_run / (2.0 * k_watched_samples));
+  return t;
+}
 
 Breakdown detect_breakdown(const std::vector<sim::Sample>& samples, const WindowRule& rule) {
   Breakdown b;

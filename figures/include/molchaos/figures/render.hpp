@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "molchaos/validation/figure_data.hpp"
+#include "molchaos/validation/flow_field.hpp"
 
 namespace molchaos::figures {
 
@@ -52,5 +53,10 @@ RenderedFigure render_work_precision(const validation::WorkPrecisionData& data,
 /// Writes work_precision_simulation.{png,pdf,gp}.
 RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionData& data,
                                       const RenderOptions& options);
+
+/// Coarse-grained velocity (arrows) over vorticity and the density field, per time and gas.
+/// Writes fig_flow_field.{png,pdf,gp}.
+RenderedFigure render_flow_field(const validation::FlowFieldData& data,
+                                 const RenderOptions& options);
 
 }  // namespace molchaos::figures

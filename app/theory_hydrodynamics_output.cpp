@@ -1,0 +1,103 @@
+// The hydrodynamic block of `molchaos theory` (see the header).
+#include "theory_hydrodynamics_output.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cli_support.hpp"
+#include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/hydrodynamics.hpp"
+
+namespace molchaos::app {
+namespace {
+
+nlohmann::json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+struct LargestShearMode {
+  double box = 0, wavenumber = 0, rate = 0, collisions = 0, time = 0;
+};
+
+// τ collisions per particle after time t of Haff's law: τ = ω_E(T0) τ0 ln(1 + t/τ0), since
+// ω_E ∝ √T = √T0/(1 + t/τ0); inverted for t.
+LargestShearMode largest_shear_mode(const theory::TransportCoefficients& c, int dimension,
+                                    double restitution, double density,
+                                    const HydrodynamicsOptions& h) {
+  LargestShearMode m;
+  m.box = std::pow(static_cast<double>(h.particles) / density, 1.0 / dimension);
+  m.wavenumber = 2.0 * std::numbers::pi / m.box;
+  m.rate = theory::shear_mode_rate(c, m.wavenumber);
+  m.collisions = theory::collisions_to_reach(c, m.wavenumber, h.growth);
+  theory::CoolingInputs in;
+  in.dimension = dimension;
+  in.density = density;
+  in.restitution = restitution;
+  const auto p = theory::predict_cooling(in);
+  const double scale = p.enskog_collision_frequency * p.tau0.value;
+  m.time = std::isfinite(m.collisions) && std::isfinite(scale)
+               ? p.tau0.value * std::expm1(m.collisions / scale)
+               : std::numeric_limits<double>::infinity();
+  return m;
+}
+
+}  // namespace
+
+std::shared_ptr<HydrodynamicsOptions> add_hydrodynamics_options(CLI::App& cmd) {
+  auto h = std::make_shared<HydrodynamicsOptions>();
+  cmd.add_option("--particles", h->particles, "particles N of the box (largest shear mode 2π/L)")
+      ->check(integer_in(2, 100000000))
+      ->capture_default_str();
+  cmd.add_option("--growth", h->growth,
+                 "level of the largest shear mode's S⊥ (1 in equilibrium) whose time is printed")
+      ->check(real_in(1.0, false, 1e12, true))
+      ->capture_default_str();
+  return h;
+}
+
+void add_hydrodynamics_json(nlohmann::json& j, int dimension, double restitution, double density,
+                            const HydrodynamicsOptions& h) {
+  const auto c = theory::transport_coefficients({dimension, density, restitution, std::nullopt});
+  const auto m = largest_shear_mode(c, dimension, restitution, density, h);
+  j["critical_box_size"] = finite_or_null(theory::critical_box_size(c));
+  j["critical_shear_wavenumber"] = theory::critical_shear_wavenumber(c);
+  j["critical_heat_wavenumber"] = theory::critical_heat_wavenumber(c);
+  j["transport"] = {
+      {"cooling_rate", c.cooling_rate},           {"pressure", c.pressure},
+      {"compressibility", c.compressibility},     {"shear_viscosity", c.shear_viscosity},
+      {"bulk_viscosity", c.bulk_viscosity},       {"thermal_conductivity", c.thermal_conductivity},
+      {"heat_flux_density", c.heat_flux_density}, {"length_unit", c.length_unit},
+      {"collision_ratio", c.collision_ratio}};
+  j["largest_shear_mode"] = {{"particles", h.particles},
+                             {"box", m.box},
+                             {"wavenumber", m.wavenumber},
+                             {"rate_per_collision", m.rate},
+                             {"growth", h.growth},
+                             {"collisions_per_particle", finite_or_null(m.collisions)},
+                             {"time", finite_or_null(m.time)}};
+}
+
+std::string hydrodynamics_text(int dimension, double restitution, double density,
+                               const HydrodynamicsOptions& h) {
+  const auto c = theory::transport_coefficients({dimension, density, restitution, std::nullopt});
+  const auto m = largest_shear_mode(c, dimension, restitution, density, h);
+  std::string s =
+      "\nlinear hydrodynamics of the HCS (Enskog, first Sonine; rates per collision "
+      "per particle)\n";
+  s += fmt::format("  η*, κ*, μ*, ζ*         {:.6g}, {:.6g}, {:.6g}, {:.6g}\n", c.shear_viscosity,
+                   c.thermal_conductivity, c.heat_flux_density, c.cooling_rate);
+  s += fmt::format("  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode 2π/k∥: {:.6g} σ)\n",
+                   theory::critical_box_size(c),
+                   2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
+  s += fmt::format("  N = {}: box {:.6g} σ, largest shear mode grows at {:.6g} per collision\n",
+                   h.particles, m.box, m.rate);
+  s += fmt::format(
+      "  its S⊥ reaches {:g} after {:.6g} collisions per particle, t = {:.6g} "
+      "(ln t = {:.4g}) on Haff's law\n",
+      h.growth, m.collisions, m.time, std::log(m.time));
+  return s;
+}
+
+}  // namespace molchaos::app
