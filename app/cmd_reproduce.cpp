@@ -70,12 +70,9 @@ void run_reproduce(const ReproduceCliOptions& o) {
                                     validation::report_markdown(results, figure_files, command));
   std::cout << fmt::format("wrote {}/REPORT.md, {}/fig4_A_of_eps.csv and {} figures in {:.0f} s\n",
                            o.out, o.out, figure_files.size(), results.seconds);
-  int not_reproduced = 0;
-  for (const auto& row : results.rows)
-    if (row.verdict == "not reproduced" || row.verdict == "contradicted") ++not_reproduced;
   std::cout << fmt::format(
-      "{} comparison rows, {} of them not reproduced or contradicted (see the report)\n",
-      results.rows.size(), not_reproduced);
+      "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
+      results.claims.size(), validation::count_not_reproduced(results));
   if (results.failed_runs > 0)
     throw std::runtime_error(
         fmt::format("{} run(s) failed; see {}/REPORT.md", results.failed_runs, o.out));
