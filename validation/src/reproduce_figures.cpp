@@ -182,7 +182,7 @@ void figure_fig3(ReproduceResults& R) {
   const std::vector<double> times = gases.front().t;
   R.fig3.curves = gases;
   R.fig3.curves.push_back(haff_curve(
-      tau0_theory, times, fmt::format("Haff's law, kinetic-theory tau0 = {:.2f}", tau0_theory)));
+      tau0_theory, times, fmt::format("Haff's law, kinetic-theory τ0 = {:.2f}", tau0_theory)));
   // Haff's law with τ0 fitted to the flux-shuffled and to the original gas (as before).
   for (std::size_t i : {std::size_t{2}, std::size_t{0}}) {
     const auto& s = R.fig3_points.at(i).summary;
@@ -190,7 +190,7 @@ void figure_fig3(ReproduceResults& R) {
     const double tau_fit = s.A.value / one_minus;
     R.fig3.curves.push_back(
         haff_curve(tau_fit, times,
-                   fmt::format("Haff's law, tau0 fitted to the {} gas = {:.2f}",
+                   fmt::format("Haff's law, τ0 fitted to the {} gas = {:.2f}",
                                i == 0 ? "original" : "flux-shuffled", tau_fit)));
   }
   for (std::size_t i = 0; i < gases.size(); ++i) {
