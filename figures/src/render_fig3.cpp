@@ -258,7 +258,7 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
         deviation_rows(data.deviations[k], "Fig3Data.deviations[" + std::to_string(k) + "]"));
     script.data.emplace_back("deviation" + std::to_string(k), deviations.back());
   }
-  x_max = std::ceil(x_max);
+  x_max = std::ceil(x_max - 0.05);  // ln 3000 = 8.006 still ends the axis at 8
 
   std::string onset_arrow;
   if (data.clustering_onset) {
@@ -290,7 +290,7 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
   c += onset_arrow;
   if (data.clustering_onset)
     c += "  set label 'clustering onset' at " + detail::number(std::log(*data.clustering_onset)) +
-         ", graph 0.55 rotate by 90 left offset character -0.7, 0 font font_small "
+         ", graph 0.27 rotate by 90 left offset character -0.7, 0 font font_small "
          "textcolor rgb '#555555' front\n";
   c += inset_commands_main(data, inset_low, inset_high);
   c += temperature_plot(data, curves, true, "");
