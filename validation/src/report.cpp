@@ -230,8 +230,8 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
     return fmt::format(
         "Snapshot of the original gas at the end of Fig. 3's runs (after the clustering onset), "
         "ε = {}, n = {}: particles coloured by speed over the rms speed, arrows the "
-        "coarse-grained velocity field. Look for dense bands and aligned arrows: clusters and "
-        "shear.",
+        "coarse-grained velocity field. Look at whether the density is still uniform and "
+        "whether neighbouring arrows align (clusters and vortices).",
         c.fig3_restitution, c.fig3_density);
   return "";
 }

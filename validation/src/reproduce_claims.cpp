@@ -74,7 +74,7 @@ double largest_abs_difference(const std::vector<ComparisonRow>& rows) {
 }  // namespace
 
 Claim claim_mu2_coefficient_a2(const ReproduceResults& R) {
-  Claim c{ClaimSource::paper, "mu2/mu2(0,0) has the coefficient 3/16 of a2 (eq. mu2a2b)", "", "",
+  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient 3/16 of a2 (eq. mu2a2b)", "", "",
           coefficient_rows(R, {"mu2 coefficient of a2"})};
   c.verdict = verdict_of_all(c.rows, "reproduced", "contradicted");
   const auto& row = c.rows.at(0);
@@ -84,7 +84,7 @@ Claim claim_mu2_coefficient_a2(const ReproduceResults& R) {
 }
 
 Claim claim_mu2_coefficient_b(const ReproduceResults& R) {
-  Claim c{ClaimSource::paper, "mu2/mu2(0,0) has the coefficient -63/40 of b (eq. mu2a2b)", "", "",
+  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient −63/40 of b (eq. mu2a2b)", "", "",
           coefficient_rows(R, {"mu2 coefficient of b"})};
   c.verdict = verdict_of_all(c.rows, "reproduced", "contradicted");
   const auto& row = c.rows.at(0);
@@ -95,7 +95,7 @@ Claim claim_mu2_coefficient_b(const ReproduceResults& R) {
 
 Claim claim_prefactors(const ReproduceResults&) {
   Claim c{ClaimSource::paper,
-          "the prefactors of mu2(0,0), tau0, omega0 and T hold for disks (d = 2)",
+          "the prefactors of μ2(0,0), τ0, ω0 and T hold for disks (d = 2)",
           "",
           "",
           {}};
@@ -113,7 +113,8 @@ Claim claim_prefactors(const ReproduceResults&) {
     c.rows.push_back({p.quantity + " (d = 2)", computed, std::nullopt, p.paper, std::nullopt,
                       a.agrees ? "reproduced" : "contradicted", "agrees within 3 quadrature errors",
                       p.note});
-    if (!a.agrees) differing.push_back(fmt::format("{:g} for {:.6g}", p.computed, *p.paper));
+    if (!a.agrees)
+      differing.push_back(fmt::format("{:g} where the paper prints {:.6g}", p.computed, *p.paper));
   }
   c.verdict = differing.empty() ? "reproduced" : "contradicted";
   c.deciding = fmt::format("{} of {} differ: computed {}", differing.size(), c.rows.size(),
@@ -140,7 +141,7 @@ Claim claim_A_varies_little(const ReproduceResults& R) {
   const Measurement v{variation, variation_error};
   const bool below = significantly_below(v, 0.6);
   Claim c{ClaimSource::paper,
-          "kinetic theory's A_rand varies by less than 0.6 % over 0.8 <= eps <= 1",
+          "kinetic theory's A of the randomized gas varies by less than 0.6 % over 0.8 ≤ ε ≤ 1",
           below ? "reproduced" : "contradicted",
           fmt::format("variation {:.4f} % ± {:.1e}", variation, variation_error),
           {}};
@@ -180,11 +181,11 @@ std::vector<ComparisonRow> haff_rows(const ReproduceResults& R, const std::strin
 Claim claim_randomized_follows_haff(const ReproduceResults& R) {
   double lo = 0.0, hi = 0.0;
   Claim c{ClaimSource::paper,
-          "the randomized gas (paper's shuffle) cools by Haff's law with kinetic theory's tau0", "",
+          "the randomized gas (paper's shuffle) cools by Haff's law with kinetic theory's τ0", "",
           "", haff_rows(R, "paper", lo, hi)};
   c.verdict = verdict_of_all(c.rows, "reproduced", "not reproduced");
   c.deciding = fmt::format(
-      "A/A_theory - 1 from {:+.2f} % to {:+.2f} %; {} of {} points differ "
+      "A/A_theory − 1 from {:+.2f} % to {:+.2f} %; {} of {} points differ "
       "by more than 3 SE (largest {:.1f} SE)",
       lo, hi, count_verdict(c.rows, "not reproduced"), c.rows.size(),
       largest_abs_difference(c.rows));
@@ -193,11 +194,10 @@ Claim claim_randomized_follows_haff(const ReproduceResults& R) {
 
 Claim finding_flux_follows_haff(const ReproduceResults& R) {
   double lo = 0.0, hi = 0.0;
-  Claim c{ClaimSource::suite,
-          "the flux-shuffled gas cools by Haff's law with kinetic theory's tau0",
+  Claim c{ClaimSource::suite, "the flux-shuffled gas cools by Haff's law with kinetic theory's τ0",
           "beyond the paper", "", haff_rows(R, "flux", lo, hi)};
   c.deciding = fmt::format(
-      "{} of {} points within 3 SE (largest {:.1f} SE); A/A_theory - 1 from "
+      "{} of {} points within 3 SE (largest {:.1f} SE); A/A_theory − 1 from "
       "{:+.2f} % to {:+.2f} %",
       count_verdict(c.rows, "reproduced"), c.rows.size(), largest_abs_difference(c.rows), lo, hi);
   return c;
@@ -244,7 +244,7 @@ std::string slope_list(const std::vector<SlopeAtDensity>& list) {
 
 Claim claim_randomized_A_flat(const ReproduceResults& R) {
   Claim c{ClaimSource::paper,
-          "A(eps) of the randomized gas is flat, as kinetic theory's (Fig. 4)",
+          "A(ε) of the randomized gas is flat, as kinetic theory's (Fig. 4)",
           "",
           "",
           {}};
@@ -261,13 +261,13 @@ Claim claim_randomized_A_flat(const ReproduceResults& R) {
   for (const auto& r : c.rows)
     if (r.quantity.find("[paper,") != std::string::npos) paper_rows.push_back(r);
   c.verdict = verdict_of_all(paper_rows, "reproduced", "not reproduced");
-  c.deciding = "slope dA/deps, paper's shuffle: " + slope_list(slopes(R, "paper")) +
+  c.deciding = "slope dA/dε, paper's shuffle: " + slope_list(slopes(R, "paper")) +
                "; flux shuffle: " + slope_list(slopes(R, "flux"));
   return c;
 }
 
 Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
-  Claim c{ClaimSource::paper, "A(eps) of the original gas depends on eps (Fig. 4)", "", "", {}};
+  Claim c{ClaimSource::paper, "A(ε) of the original gas depends on ε (Fig. 4)", "", "", {}};
   const auto list = slopes(R, "none");
   for (const auto& s : list) {
     const Agreement flat = agreement(s.simulated, Measurement{0.0, 0.0});
@@ -281,7 +281,7 @@ Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
     c.rows.back().rule = "reproduced if the slope differs from 0 by more than 3 SE";
   }
   c.verdict = verdict_of_all(c.rows, "reproduced", "not reproduced");
-  c.deciding = "slope dA/deps " + slope_list(list);
+  c.deciding = "slope dA/dε " + slope_list(list);
   return c;
 }
 
@@ -291,7 +291,7 @@ Claim claim_clustering_onset(const ReproduceResults& R) {
   const auto& cfg = R.config;
   const auto& o = R.fig3_original.summary;
   Claim c{ClaimSource::paper,
-          fmt::format("clusters appear at ln t ~ 6 (eps = {}, n = {})", cfg.fig3_restitution,
+          fmt::format("clusters appear at ln t ≈ 6 (ε = {}, n = {})", cfg.fig3_restitution,
                       cfg.fig3_density),
           "not reproduced",
           "no break-down detected before t_end",
@@ -314,7 +314,7 @@ Claim claim_clustering_onset(const ReproduceResults& R) {
                   o.breakdowns, o.runs, cfg.window.density_mode_threshold,
                   cfg.window.velocity_mode_threshold)));
   c.verdict = c.rows.back().verdict;
-  c.deciding = fmt::format("detected ln t_b = {:.2f} ± {:.2f} ({} of {} runs), paper ~6",
+  c.deciding = fmt::format("detected ln t_b = {:.2f} ± {:.2f} ({} of {} runs), paper ≈ 6",
                            ln_tb.value, ln_tb.error, o.breakdowns, o.runs);
   return c;
 }
@@ -323,7 +323,7 @@ Claim claim_clustering_onset(const ReproduceResults& R) {
 // Enskog's collision frequency.
 Claim finding_elastic_limit(const ReproduceResults& R) {
   Claim c{ClaimSource::suite,
-          "at eps = 1 a shuffle that only removes correlations keeps Enskog's collision frequency",
+          "at ε = 1 a shuffle that only removes correlations keeps Enskog's collision frequency",
           "beyond the paper",
           "",
           {}};
@@ -345,7 +345,7 @@ Claim finding_elastic_limit(const ReproduceResults& R) {
     }
     per_mode.push_back(fmt::format("{}: {}", name, fmt::join(ratios, ", ")));
   }
-  c.deciding = fmt::format("omega/omega_Enskog at n = {}: {}", fmt::join(R.config.densities, ", "),
+  c.deciding = fmt::format("ω/ω_Enskog at n = {}: {}", fmt::join(R.config.densities, ", "),
                            fmt::join(per_mode, "; "));
   return c;
 }
@@ -381,7 +381,7 @@ Claim finding_b_two_ways(const ReproduceResults& R) {
 }
 
 Claim finding_higher_order_coefficients(const ReproduceResults& R) {
-  Claim c{ClaimSource::suite, "the terms of mu2/mu2(0,0) that the paper drops (a2^2, a2*b, a2^2*b)",
+  Claim c{ClaimSource::suite, "the terms of μ2/μ2(0,0) that the paper drops (a2², a2·b, a2²·b)",
           "beyond the paper", "",
           coefficient_rows(R, {"mu2 coefficient of a2^2", "mu2 coefficient of a2*b",
                                "mu2 coefficient of a2^2*b"})};

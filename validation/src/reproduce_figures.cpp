@@ -38,7 +38,7 @@ ASeries a_series(const ReproduceResults& R, double n, sim::Randomization mode) {
 
 void figure_fig4(ReproduceResults& R) {
   const auto& cfg = R.config;
-  R.fig4.title = fmt::format("A(eps) = tau0 (1 - eps^2), N = {}", cfg.particles);
+  R.fig4.title = fmt::format("A(ε) = τ0 (1 − ε^2), N = {}", cfg.particles);
   for (double n : cfg.densities) {
     Fig4Panel panel;
     panel.density = n;
@@ -95,7 +95,7 @@ void b_from_contacts(const PointResult& p, double e, BSeries& series) {
 }  // namespace
 
 void figure_b(ReproduceResults& R) {
-  R.b.title = "velocity-correlation coefficient b(eps)";
+  R.b.title = "velocity-correlation coefficient b(ε)";
   for (double n : R.config.densities) {
     BPanel bp;
     bp.density = n;
@@ -168,7 +168,7 @@ TemperatureCurve deviation_curve(const TemperatureCurve& gas, double tau0, bool 
 
 void figure_fig3(ReproduceResults& R) {
   const auto& cfg = R.config;
-  R.fig3.title = fmt::format("T(t), eps = {}, n = {}, N = {}", cfg.fig3_restitution,
+  R.fig3.title = fmt::format("T(t), ε = {}, n = {}, N = {}", cfg.fig3_restitution,
                              cfg.fig3_density, cfg.particles);
   const double tau0_theory = theory_tau0(k_dimension, cfg.fig3_density, cfg.fig3_restitution);
   const double one_minus = 1.0 - cfg.fig3_restitution * cfg.fig3_restitution;
@@ -257,7 +257,7 @@ void figure_snapshot(ReproduceResults& R) {
   if (r.snapshots.empty()) return;
   R.snapshot = make_snapshot(r.snapshots.back(), 10);
   R.snapshot.title =
-      fmt::format("original gas at t = {:.0f} (ln t = {:.2f}), eps = {}, n = {}", R.snapshot.time,
+      fmt::format("original gas at t = {:.0f} (ln t = {:.2f}), ε = {}, n = {}", R.snapshot.time,
                   std::log(R.snapshot.time), cfg.fig3_restitution, cfg.fig3_density);
 }
 
