@@ -13,7 +13,7 @@ PACKAGES := cmake g++ make git pkg-config ca-certificates python3 python3-sympy 
             libgsl-dev libeigen3-dev libboost-test-dev libboost-iostreams-dev \
             libboost-filesystem-dev libboost-system-dev libgnuplot-iostream-dev gnuplot-nox \
             libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev \
-            libopenmpi-dev openmpi-bin valgrind
+            libopenmpi-dev openmpi-bin valgrind chromium
 
 .PHONY: all deps configure build build-app test test-all reproduce bench clean format
 

@@ -1,5 +1,6 @@
 // `molchaos reproduce`: regenerates the paper's results into one folder: the figures, REPORT.md,
-// fig4_A_of_eps.csv. Runs are cached in <out>/cache, so an interrupted reproduction resumes.
+// REPORT.html, fig4_A_of_eps.csv. Runs are cached in <out>/cache, so an interrupted reproduction
+// resumes.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +11,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/validation/report.hpp"
+#include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/reproduce.hpp"
 #include "molchaos/version.hpp"
 #include "sweep_runner.hpp"
@@ -66,16 +68,18 @@ void run_reproduce(const ReproduceCliOptions& o) {
   const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
+  const std::string markdown = validation::report_markdown(results, figure_files, command);
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
-                                    validation::report_markdown(results, figure_files, command));
-  std::cout << fmt::format("wrote {}/REPORT.md, {}/fig4_A_of_eps.csv and {} figures in {:.0f} s\n",
-                           o.out, o.out, figure_files.size(), results.seconds);
-  int not_reproduced = 0;
-  for (const auto& row : results.rows)
-    if (row.verdict == "not reproduced" || row.verdict == "contradicted") ++not_reproduced;
+                                    markdown);
+  // The same report as one self-contained page, figures embedded.
+  validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.html").string(),
+                                    validation::report_html(markdown, o.out));
   std::cout << fmt::format(
-      "{} comparison rows, {} of them not reproduced or contradicted (see the report)\n",
-      results.rows.size(), not_reproduced);
+      "wrote {}/REPORT.md, {}/REPORT.html, {}/fig4_A_of_eps.csv and {} figures in {:.0f} s\n",
+      o.out, o.out, o.out, figure_files.size(), results.seconds);
+  std::cout << fmt::format(
+      "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
+      results.claims.size(), validation::count_not_reproduced(results));
   if (results.failed_runs > 0)
     throw std::runtime_error(
         fmt::format("{} run(s) failed; see {}/REPORT.md", results.failed_runs, o.out));

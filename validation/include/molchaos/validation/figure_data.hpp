@@ -29,7 +29,11 @@ struct TemperatureCurve {
 /// Fig. 3 of the paper: T(t) at ε = 0.93, n = 0.05, N = 5000.
 struct Fig3Data {
   std::string title;
-  std::vector<TemperatureCurve> curves;    ///< simulations and Haff's-law lines
+  std::vector<TemperatureCurve> curves;  ///< simulations and Haff's-law lines
+  /// Lower panel: T/T_Haff − 1 of each gas (ensemble mean ± SE over runs, in `T`, `T_error`),
+  /// against Haff's law with the kinetic-theory τ0 (is_theory = true) and with the gas's own
+  /// fitted τ0 (is_theory = false).
+  std::vector<TemperatureCurve> deviations;
   std::optional<double> clustering_onset;  ///< detected break-down time of the original gas
   double inset_log_t_min = 2.5;            ///< inset range in ln t
   double inset_log_t_max = 3.0;
@@ -138,6 +142,7 @@ struct ComparisonRow {
   std::optional<double> paper;
   std::optional<double> difference_in_se;  ///< (simulation − theory)/combined standard error
   std::string verdict;                     ///< "reproduced", "not reproduced", "contradicted", ...
+  std::string rule;                        ///< the rule that gave the verdict
   std::string note;
 };
 

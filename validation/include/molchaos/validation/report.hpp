@@ -16,6 +16,10 @@ void write_file_atomically(const std::string& path, const std::string& text);
 /// Fig. 4's data: columns density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err.
 std::string fig4_csv(const ReproduceResults& results);
 
+/// One sentence on what the figure in `file` (e.g. "fig3_temperature.png") shows and what to look
+/// at; empty for a figure the report does not know.
+std::string figure_caption(const std::string& file, const ReproduceResults& results);
+
 /// The Markdown report. `figures` lists the figure files (relative to the report) to embed;
 /// `command` is the command line that produced it.
 std::string report_markdown(const ReproduceResults& results,

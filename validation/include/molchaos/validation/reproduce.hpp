@@ -1,6 +1,7 @@
 // The whole reproduction of the paper as one computation: the ensembles behind Figs. 3 and 4,
-// the elastic-limit check of every randomization mode, b(ε) three ways, and the comparison rows
-// of the report. Produces data only; figures/ renders it and report.hpp writes it out.
+// the elastic-limit check of every randomization mode, b(ε) three ways, and each claim of the
+// paper (and each finding of the suite) with its verdict. Produces data only; figures/ renders it
+// and report.hpp writes it out. How to add a claim: the top of validation/src/reproduce.cpp.
 #pragma once
 
 #include <string>
@@ -36,15 +37,30 @@ struct ReproduceConfig {
   static ReproduceConfig quick_look();
 };
 
+/// Where a claim comes from: the paper (its verdict says whether the reproduction confirms it)
+/// or the suite itself (a finding beyond the paper).
+enum class ClaimSource { paper, suite };
+
+/// One claim with its verdict, the number that decides it, and the comparison rows behind it.
+struct Claim {
+  ClaimSource source = ClaimSource::paper;
+  std::string statement;  ///< one line, e.g. "the mu2 coefficient of b is -63/40"
+  std::string verdict;    ///< "reproduced", "contradicted", "not reproduced", "beyond the paper"
+  std::string deciding;   ///< the number that decides it, with its error
+  std::vector<ComparisonRow> rows;
+};
+
 struct ReproduceResults {
   ReproduceConfig config;
   std::string version;
   EnsembleSpec fig4_spec, fig3_spec, elastic_spec;
   std::vector<PointResult> fig4_points;     ///< all densities × restitutions × modes
   std::vector<PointResult> elastic_points;  ///< ε = 1, every mode and density
-  PointResult fig3_original;                ///< ε = 0.93, n = 0.05, no shuffle
+  std::vector<PointResult> fig3_points;     ///< ε = 0.93, n = 0.05, modes none, paper, flux
+  PointResult fig3_original;                ///< fig3_points[0]: no shuffle
+  std::vector<RunOutcome> fig3_runs;        ///< the runs behind Fig. 3's curves
   theory::ExpansionTable coefficients;      ///< μ2 expansion, d = 2, printed dyad
-  std::vector<ComparisonRow> rows;          ///< the report's verdicts
+  std::vector<Claim> claims;                ///< the paper's claims first, then the suite's
   Fig3Data fig3;
   Fig4Data fig4;
   BData b;
@@ -53,6 +69,9 @@ struct ReproduceResults {
   int failed_runs = 0;
   std::vector<std::string> failures;
 };
+
+/// Number of claims whose verdict is "not reproduced" or "contradicted".
+int count_not_reproduced(const ReproduceResults& results);
 
 /// Runs (or loads from the cache) everything and analyses it.
 ReproduceResults reproduce(const ReproduceConfig& config, const SweepOptions& sweep);

@@ -1,0 +1,264 @@
+// The figure steps of the reproduction: the data behind Fig. 4, b(ε), Fig. 3 and the snapshot,
+// each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "molchaos/sim/run.hpp"
+#include "molchaos/theory/contact_value.hpp"
+#include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/sonine.hpp"
+#include "reproduce_steps.hpp"
+
+namespace molchaos::validation::steps {
+namespace {
+
+constexpr int k_dimension = 2;
+
+// One gas of Fig. 4's panel at density n: its A(ε) points and their straight-line fit.
+ASeries a_series(const ReproduceResults& R, double n, sim::Randomization mode) {
+  ASeries s;
+  s.mode = std::string(sim::to_string(mode));
+  s.label = mode_label(s.mode);
+  std::vector<double> x;
+  std::vector<Measurement> y;
+  for (double e : R.config.restitutions) {
+    const auto& p = find_point(R, n, e, s.mode);
+    if (p.summary.runs == 0) continue;
+    s.points.push_back({e, p.summary.A, p.summary.runs});
+    x.push_back(e);
+    y.push_back(p.summary.A);
+  }
+  if (x.size() >= 2) s.fit = fit_line(x, y);
+  return s;
+}
+
+}  // namespace
+
+void figure_fig4(ReproduceResults& R) {
+  const auto& cfg = R.config;
+  R.fig4.title = fmt::format("A(ε) = τ0 (1 − ε^2), N = {}", cfg.particles);
+  for (double n : cfg.densities) {
+    Fig4Panel panel;
+    panel.density = n;
+    for (auto mode : k_modes) panel.series.push_back(a_series(R, n, mode));
+    // Kinetic theory, b = 0: A = 1/(ω0 μ2/μ2(0,0)) with the first-Sonine a2(ε).
+    for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
+      panel.theory_restitution.push_back(e);
+      const double a2 = theory::a2_first_sonine(k_dimension, e);
+      panel.theory_A.push_back(1.0 / (theory::cooling_frequency_omega0(k_dimension, n, 1.0) *
+                                      R.coefficients.ratio(a2, 0.0)));
+    }
+    R.fig4.panels.push_back(panel);
+  }
+}
+
+namespace {
+
+// b from the cooling rates of the original and the flux gas, paired by seed: with the paper's
+// linear coefficient 63/40 and its ω0 (3D prefactor), and with the suite's full coefficients.
+// R(a2, b) = R0(a2) + b·cb(a2) and A ∝ 1/R give b = R0 (A_rand/A − 1)/cb.
+void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& paper_way,
+                    BSeries& suite_way) {
+  const auto& orig = find_point(R, n, e, "none");
+  const auto& rand = find_point(R, n, e, "flux");
+  if (orig.summary.runs == 0 || rand.summary.runs == 0) return;
+  const double g2 = theory::contact_value_g2_at_density(k_dimension, n);
+  const double omega0_paper = g2 * n * std::sqrt(std::numbers::pi) / 3.0;
+  const Measurement diff =
+      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
+  paper_way.restitution.push_back(e);
+  paper_way.b.push_back(
+      {diff.value * omega0_paper / (63.0 / 40.0), diff.error * omega0_paper / (63.0 / 40.0)});
+  const double a2 = theory::a2_first_sonine(k_dimension, e);
+  const double R0 = mu2_ratio_at_b0(R.coefficients, a2);
+  const double cb = mu2_ratio_b_slope(R.coefficients, a2);
+  const Measurement ratio =
+      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return r / o; });
+  suite_way.restitution.push_back(e);
+  suite_way.b.push_back({R0 * (ratio.value - 1.0) / cb, R0 * ratio.error / std::abs(cb)});
+}
+
+// b directly from the pre-collision velocities at contact (mean dyad) of one gas.
+void b_from_contacts(const PointResult& p, double e, BSeries& series) {
+  if (p.summary.mean_dyad.error <= 0) return;
+  theory::QuadratureOptions quad;
+  quad.relative_tolerance = 1e-10;
+  const auto J =
+      theory::contact_integrals(k_dimension, p.summary.a2.value, theory::k_paper_dyad_factor, quad);
+  const auto b = J.b_from_mean_dyad(p.summary.mean_dyad.value, p.summary.mean_dyad.error);
+  series.restitution.push_back(e);
+  series.b.push_back({b.value, b.error});
+}
+
+}  // namespace
+
+void figure_b(ReproduceResults& R) {
+  R.b.title = "velocity-correlation coefficient b(ε)";
+  for (double n : R.config.densities) {
+    BPanel bp;
+    bp.density = n;
+    BSeries b_paper{"from A, paper's 63/40 and ω0", {}, {}};
+    BSeries b_suite{"from A, suite's coefficients and ω0", {}, {}};
+    BSeries b_contact{"contacts, original gas", {}, {}};
+    BSeries b_control{"contacts, flux gas (control)", {}, {}};
+    for (double e : R.config.restitutions) {
+      b_from_cooling(R, n, e, b_paper, b_suite);
+      b_from_contacts(find_point(R, n, e, "none"), e, b_contact);
+      b_from_contacts(find_point(R, n, e, "flux"), e, b_control);
+    }
+    bp.series = {b_paper, b_suite, b_contact, b_control};
+    R.b.panels.push_back(bp);
+  }
+}
+
+namespace {
+
+// Ensemble mean and standard error of T at each sample of the runs (common time grid), t ≥ 1.
+TemperatureCurve mean_curve(const std::vector<const sim::RunResult*>& runs,
+                            const std::string& label) {
+  TemperatureCurve c;
+  c.label = label;
+  if (runs.empty()) return c;
+  std::size_t len = runs.front()->samples.size();
+  for (const auto* r : runs) len = std::min(len, r->samples.size());
+  for (std::size_t i = 0; i < len; ++i) {
+    const double t = runs.front()->samples[i].t;
+    if (t < 1.0) continue;  // Fig. 3 starts at ln t = 0, as the paper's
+    std::vector<double> T;
+    for (const auto* r : runs) T.push_back(r->samples[i].temperature);
+    const Measurement m = mean_and_standard_error(T);
+    c.t.push_back(t);
+    c.T.push_back(m.value);
+    c.T_error.push_back(m.error);
+  }
+  return c;
+}
+
+TemperatureCurve haff_curve(double tau0, const std::vector<double>& times,
+                            const std::string& label) {
+  TemperatureCurve c;
+  c.label = label;
+  c.is_theory = true;
+  for (double t : times) {
+    c.t.push_back(t);
+    c.T.push_back(theory::haff_temperature(t, 1.0, tau0));
+    c.T_error.push_back(0.0);
+  }
+  return c;
+}
+
+// T/T_Haff − 1 of one gas's mean curve; the band is the standard error over runs.
+TemperatureCurve deviation_curve(const TemperatureCurve& gas, double tau0, bool from_theory,
+                                 const std::string& label) {
+  TemperatureCurve d;
+  d.label = label;
+  d.is_theory = from_theory;
+  for (std::size_t i = 0; i < gas.t.size(); ++i) {
+    const double haff = theory::haff_temperature(gas.t[i], 1.0, tau0);
+    d.t.push_back(gas.t[i]);
+    d.T.push_back(gas.T[i] / haff - 1.0);
+    d.T_error.push_back(gas.T_error[i] / haff);
+  }
+  return d;
+}
+
+}  // namespace
+
+void figure_fig3(ReproduceResults& R) {
+  const auto& cfg = R.config;
+  R.fig3.title = fmt::format("T(t), ε = {}, n = {}, N = {}", cfg.fig3_restitution,
+                             cfg.fig3_density, cfg.particles);
+  const double tau0_theory = theory_tau0(k_dimension, cfg.fig3_density, cfg.fig3_restitution);
+  const double one_minus = 1.0 - cfg.fig3_restitution * cfg.fig3_restitution;
+  std::vector<TemperatureCurve> gases;
+  for (auto mode : k_modes) {
+    std::vector<const sim::RunResult*> group;
+    for (const auto& o : R.fig3_runs)
+      if (o.ok && o.result.parameters.randomize == mode) group.push_back(&o.result);
+    gases.push_back(mean_curve(group, mode_label(std::string(sim::to_string(mode)))));
+  }
+  const std::vector<double> times = gases.front().t;
+  R.fig3.curves = gases;
+  R.fig3.curves.push_back(haff_curve(
+      tau0_theory, times, fmt::format("Haff's law, kinetic-theory τ0 = {:.2f}", tau0_theory)));
+  // Haff's law with τ0 fitted to the flux-shuffled and to the original gas (as before).
+  for (std::size_t i : {std::size_t{2}, std::size_t{0}}) {
+    const auto& s = R.fig3_points.at(i).summary;
+    if (s.runs == 0) continue;
+    const double tau_fit = s.A.value / one_minus;
+    R.fig3.curves.push_back(
+        haff_curve(tau_fit, times,
+                   fmt::format("Haff's law, τ0 fitted to the {} gas = {:.2f}",
+                               i == 0 ? "original" : "flux-shuffled", tau_fit)));
+  }
+  for (std::size_t i = 0; i < gases.size(); ++i) {
+    if (gases[i].t.empty()) continue;
+    const auto& s = R.fig3_points.at(i).summary;
+    R.fig3.deviations.push_back(
+        deviation_curve(gases[i], tau0_theory, true, gases[i].label + ", kinetic-theory τ0"));
+    if (s.runs > 0)
+      R.fig3.deviations.push_back(deviation_curve(gases[i], s.A.value / one_minus, false,
+                                                  gases[i].label + ", own fitted τ0"));
+  }
+  if (R.fig3_original.summary.breakdowns > 0)
+    R.fig3.clustering_onset = R.fig3_original.summary.breakdown_time.value;
+}
+
+namespace {
+
+SnapshotData make_snapshot(const sim::Snapshot& snap, int grid) {
+  SnapshotData s;
+  s.time = snap.t;
+  s.box = snap.box;
+  const std::size_t n = snap.positions.size() / 2;
+  double v2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    v2 += snap.velocities[2 * i] * snap.velocities[2 * i] +
+          snap.velocities[2 * i + 1] * snap.velocities[2 * i + 1];
+  const double vrms = std::sqrt(v2 / static_cast<double>(n));
+  std::vector<double> sx(grid * grid, 0.0), sy(grid * grid, 0.0), count(grid * grid, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = snap.positions[2 * i], y = snap.positions[2 * i + 1];
+    const double vx = snap.velocities[2 * i] / vrms, vy = snap.velocities[2 * i + 1] / vrms;
+    s.x.push_back(x);
+    s.y.push_back(y);
+    s.speed.push_back(std::hypot(vx, vy));
+    const int cx = std::min(grid - 1, static_cast<int>(x / snap.box * grid));
+    const int cy = std::min(grid - 1, static_cast<int>(y / snap.box * grid));
+    sx[cy * grid + cx] += vx;
+    sy[cy * grid + cx] += vy;
+    count[cy * grid + cx] += 1.0;
+  }
+  const double cell = snap.box / grid;
+  for (int cy = 0; cy < grid; ++cy)
+    for (int cx = 0; cx < grid; ++cx) {
+      const int k = cy * grid + cx;
+      if (count[k] == 0) continue;
+      s.grid_x.push_back((cx + 0.5) * cell);
+      s.grid_y.push_back((cy + 0.5) * cell);
+      s.grid_vx.push_back(sx[k] / count[k]);
+      s.grid_vy.push_back(sy[k] / count[k]);
+    }
+  return s;
+}
+
+}  // namespace
+
+// The original gas (first seed) re-run to the end of Fig. 3, well after the clustering onset.
+void figure_snapshot(ReproduceResults& R) {
+  const auto& cfg = R.config;
+  sim::Parameters p = expand(R.fig3_spec).at(0);
+  p.snapshot_times = {cfg.fig3_t_end};
+  p.t_end = cfg.fig3_t_end;
+  p.contact_statistics = false;
+  const sim::RunResult r = sim::run(p);
+  if (r.snapshots.empty()) return;
+  R.snapshot = make_snapshot(r.snapshots.back(), 10);
+  R.snapshot.title =
+      fmt::format("original gas at t = {:.0f} (ln t = {:.2f}), ε = {}, n = {}", R.snapshot.time,
+                  std::log(R.snapshot.time), cfg.fig3_restitution, cfg.fig3_density);
+}
+
+}  // namespace molchaos::validation::steps

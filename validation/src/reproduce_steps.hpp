@@ -1,0 +1,51 @@
+// The steps of the reproduction (private to validation/): one function per figure and one per
+// claim, listed in reproduce.cpp. A figure step fills its data in ReproduceResults; a claim step
+// reads the results (runs, figures' data, theory) and returns the claim with its verdict.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "molchaos/sim/parameters.hpp"
+#include "molchaos/validation/reproduce.hpp"
+
+namespace molchaos::validation::steps {
+
+// Randomization modes of every ensemble, in this order (original gas first).
+inline const std::vector<sim::Randomization> k_modes{
+    sim::Randomization::none, sim::Randomization::paper, sim::Randomization::flux};
+
+/// Legend text of a mode ("none", "paper", "flux").
+std::string mode_label(const std::string& mode);
+
+/// The Fig. 4 ensemble's point at (density, restitution, mode); throws if absent.
+const PointResult& find_point(const ReproduceResults& results, double density, double restitution,
+                              const std::string& mode);
+
+/// The suite's coefficients of μ2/μ2(0,0) at a2, b = 0 (its A up to ω0), and ∂/∂b.
+double mu2_ratio_at_b0(const theory::ExpansionTable& table, double a2);
+double mu2_ratio_b_slope(const theory::ExpansionTable& table, double a2);
+
+// --- figures ------------------------------------------------------------------------------
+void figure_fig4(ReproduceResults& results);
+void figure_b(ReproduceResults& results);
+void figure_fig3(ReproduceResults& results);
+void figure_snapshot(ReproduceResults& results);
+
+// --- the paper's claims -----------------------------------------------------------------------
+Claim claim_mu2_coefficient_a2(const ReproduceResults& results);
+Claim claim_mu2_coefficient_b(const ReproduceResults& results);
+Claim claim_prefactors(const ReproduceResults& results);
+Claim claim_A_varies_little(const ReproduceResults& results);
+Claim claim_randomized_follows_haff(const ReproduceResults& results);
+Claim claim_randomized_A_flat(const ReproduceResults& results);
+Claim claim_original_A_depends_on_eps(const ReproduceResults& results);
+Claim claim_clustering_onset(const ReproduceResults& results);
+
+// --- the suite's own findings -------------------------------------------------------------------
+Claim finding_elastic_limit(const ReproduceResults& results);
+Claim finding_flux_follows_haff(const ReproduceResults& results);
+Claim finding_b_two_ways(const ReproduceResults& results);
+Claim finding_higher_order_coefficients(const ReproduceResults& results);
+
+}  // namespace molchaos::validation::steps
