@@ -13,7 +13,9 @@ PACKAGES := cmake g++ make git pkg-config ca-certificates python3 python3-sympy 
             libgsl-dev libeigen3-dev libboost-test-dev libboost-iostreams-dev \
             libboost-filesystem-dev libboost-system-dev libgnuplot-iostream-dev gnuplot-nox \
             libcli11-dev nlohmann-json3-dev libfmt-dev libbenchmark-dev \
-            libopenmpi-dev openmpi-bin valgrind chromium
+            libopenmpi-dev openmpi-bin valgrind chromium \
+            pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-scipy \
+            python3-matplotlib libhdf5-dev python3-h5py python3-ase
 
 .PHONY: all deps configure build build-app test test-all reproduce bench clean format
 

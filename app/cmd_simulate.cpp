@@ -14,6 +14,10 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/sim/sim.hpp"
+#ifdef MOLCHAOS_HAVE_IO
+#include "molchaos/io/h5md_writer.hpp"
+#include "molchaos/io/xyz_writer.hpp"
+#endif
 
 namespace molchaos::app {
 namespace {
@@ -22,6 +26,8 @@ struct SimulateOptions {
   sim::Parameters parameters;
   std::string randomize = "none";
   std::string out = "run.csv";
+  std::string trajectory;  // H5MD file of the snapshots (empty: none)
+  std::string xyz;         // extended XYZ file of the snapshots (empty: none)
   bool quiet = false;
 };
 
@@ -39,6 +45,8 @@ void run_simulate(const SimulateOptions& options) {
                      "unknown value '" + options.randomize + "'; allowed: none, paper, flux");
   p.randomize = *mode;
   require_writable_file("--out", options.out, /*create_parent=*/false);
+  if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
+  if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
@@ -72,6 +80,10 @@ void run_simulate(const SimulateOptions& options) {
     if (std::rename(temporary.c_str(), path.c_str()) != 0)
       throw std::runtime_error("cannot rename " + temporary + " to " + path);
   }
+#ifdef MOLCHAOS_HAVE_IO
+  if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory);
+  if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz);
+#endif
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
                result.stop_reason.c_str(), options.out.c_str());
@@ -135,6 +147,12 @@ void add_simulate_command(CLI::App& app) {
       ->check(real_in(0, true, 1, false))
       ->capture_default_str();
   cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
+#ifdef MOLCHAOS_HAVE_IO
+  cmd->add_option("--trajectory", options->trajectory,
+                  "H5MD file (.h5) of the configurations at --snapshot-times");
+  cmd->add_option("--xyz", options->xyz,
+                  "Extended XYZ file of the configurations at --snapshot-times, one frame each");
+#endif
   cmd->add_flag("--quiet", options->quiet, "No progress display");
   cmd->callback([options] { run_simulate(*options); });
 }

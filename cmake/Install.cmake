@@ -13,13 +13,18 @@ endif()
 list(TRANSFORM molchaos_exported_libraries PREPEND molchaos_ OUTPUT_VARIABLE molchaos_exported_targets)
 
 # Include directories: the source tree while building, <prefix>/include once installed.
+# Every directory a library already exports (its include/ and, for theory, the header the
+# symbolic derivation generates) is kept for the build and installed under <prefix>/include.
 foreach(lib ${molchaos_exported_libraries})
+  get_target_property(molchaos_build_includes molchaos_${lib} INTERFACE_INCLUDE_DIRECTORIES)
+  set(molchaos_interface_includes "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
+  foreach(dir ${molchaos_build_includes})
+    list(APPEND molchaos_interface_includes "$<BUILD_INTERFACE:${dir}>")
+    install(DIRECTORY ${dir}/molchaos DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  endforeach()
   set_target_properties(molchaos_${lib} PROPERTIES
     EXPORT_NAME ${lib}
-    INTERFACE_INCLUDE_DIRECTORIES
-      "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/${lib}/include>;$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>")
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${lib}/include/molchaos
-          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+    INTERFACE_INCLUDE_DIRECTORIES "${molchaos_interface_includes}")
 endforeach()
 
 # The static libraries name their private helpers (warning flags, the generated version header)

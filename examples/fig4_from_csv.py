@@ -1,0 +1,38 @@
+"""Fig. 4 of the paper from the table `molchaos reproduce` writes: the cooling amplitude A(eps)
+measured (with its standard error) beside the kinetic theory, one curve per randomization mode.
+
+    python3 examples/fig4_from_csv.py results/fig4_A_of_eps.csv fig4.png
+"""
+
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+import molchaos  # noqa: E402
+
+
+def main(table_path, png_path):
+    table, meta = molchaos.read_table(table_path)
+    fig, ax = plt.subplots(figsize=(5, 4))
+    for (density, mode), rows in table.groupby(["density", "randomize"]):
+        rows = rows.sort_values("restitution")
+        ax.errorbar(rows["restitution"], rows["A"], yerr=rows["A_err"], fmt="o", capsize=2,
+                    label=f"MD, n = {density}, {mode}")
+    theory = table.drop_duplicates(["density", "restitution"]).sort_values("restitution")
+    for density, rows in theory.groupby("density"):
+        ax.plot(rows["restitution"], rows["A_theory"], "-", label=f"theory, n = {density}")
+    ax.set_xlabel(r"restitution $\varepsilon$")
+    ax.set_ylabel(r"$A = \tau_0 (1-\varepsilon^2)$")
+    ax.set_yscale("log")
+    ax.set_title(f"d = {meta.get('dimension', '?')}, N = {meta.get('particles', '?')}")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=120)
+    return table
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "fig4.png")

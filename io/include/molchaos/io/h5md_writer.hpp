@@ -1,0 +1,15 @@
+// The snapshots of a run as an H5MD 1.1 trajectory (HDF5): particles/all/{position,velocity} with
+// value/time/step, the periodic box, and the run's parameters as attributes of /parameters.
+#pragma once
+
+#include <string>
+
+#include "molchaos/sim/result.hpp"
+
+namespace molchaos::io {
+
+/// Writes every snapshot of r to path (temporary file, then rename). step is the snapshot index:
+/// an event-driven run has no time step. Throws std::runtime_error on an HDF5 failure.
+void write_h5md_file(const sim::RunResult& r, const std::string& path);
+
+}  // namespace molchaos::io

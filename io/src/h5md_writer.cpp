@@ -1,0 +1,173 @@
+// H5MD 1.1 (de Buyl, Colberg, Höfling, 2014; nongnu.org/h5md/h5md.html) through the HDF5 C API.
+// Every time-dependent element is a group {value [F x N x d], time [F], step [F]}.
+#include "molchaos/io/h5md_writer.hpp"
+
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <vector>
+
+namespace molchaos::io {
+namespace {
+
+hid_t check(hid_t id, const char* what) {
+  if (id < 0) throw std::runtime_error(std::string("HDF5: cannot create ") + what);
+  return id;
+}
+
+void check_status(herr_t status, const char* what) {
+  if (status < 0) throw std::runtime_error(std::string("HDF5: cannot write ") + what);
+}
+
+// Closes an HDF5 handle at scope exit, whichever close function its kind needs.
+struct Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~Handle() { close(id); }
+};
+
+void string_attribute(hid_t where, const char* name, const std::string& value) {
+  Handle type{H5Tcopy(H5T_C_S1), H5Tclose};
+  H5Tset_size(type.id, value.size());
+  Handle space{H5Screate(H5S_SCALAR), H5Sclose};
+  Handle attr{check(H5Acreate2(where, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), name),
+              H5Aclose};
+  check_status(H5Awrite(attr.id, type.id, value.c_str()), name);
+}
+
+template <class T>
+void numeric_attribute(hid_t where, const char* name, hid_t type, const std::vector<T>& values,
+                       bool scalar) {
+  const hsize_t size = values.size();
+  Handle space{scalar ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr), H5Sclose};
+  Handle attr{check(H5Acreate2(where, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT), name),
+              H5Aclose};
+  check_status(H5Awrite(attr.id, type, values.data()), name);
+}
+
+// boundary = ["periodic", ...]: a fixed-length string array, one entry per dimension.
+void boundary_attribute(hid_t box, int dimension) {
+  const std::string periodic = "periodic";
+  Handle type{H5Tcopy(H5T_C_S1), H5Tclose};
+  H5Tset_size(type.id, periodic.size());
+  const hsize_t size = static_cast<hsize_t>(dimension);
+  Handle space{H5Screate_simple(1, &size, nullptr), H5Sclose};
+  Handle attr{
+      check(H5Acreate2(box, "boundary", type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), "boundary"),
+      H5Aclose};
+  std::string all;
+  for (int a = 0; a < dimension; ++a) all += periodic;
+  check_status(H5Awrite(attr.id, type.id, all.data()), "boundary");
+}
+
+void dataset(hid_t where, const char* name, hid_t type, const std::vector<hsize_t>& shape,
+             const void* data) {
+  Handle space{H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose};
+  Handle set{
+      check(H5Dcreate2(where, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name),
+      H5Dclose};
+  check_status(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);
+}
+
+Handle group(hid_t where, const char* name) {
+  return {check(H5Gcreate2(where, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name), H5Gclose};
+}
+
+// One time-dependent element: value (F x N x d), time (F), step (F).
+void time_series(hid_t particles, const char* name, const sim::RunResult& r, bool positions) {
+  const auto d = static_cast<hsize_t>(r.parameters.dimension);
+  const auto frames = static_cast<hsize_t>(r.snapshots.size());
+  const auto n = static_cast<hsize_t>(r.parameters.particles);
+  std::vector<double> value;
+  std::vector<double> time;
+  std::vector<std::int64_t> step;
+  for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
+    const auto& s = r.snapshots[k];
+    const auto& data = positions ? s.positions : s.velocities;
+    value.insert(value.end(), data.begin(), data.end());
+    time.push_back(s.t);
+    step.push_back(static_cast<std::int64_t>(k));
+  }
+  Handle element = group(particles, name);
+  dataset(element.id, "value", H5T_IEEE_F64LE, {frames, n, d}, value.data());
+  dataset(element.id, "time", H5T_IEEE_F64LE, {frames}, time.data());
+  dataset(element.id, "step", H5T_STD_I64LE, {frames}, step.data());
+}
+
+void parameters_group(hid_t file, const sim::RunResult& r) {
+  const sim::Parameters& p = r.parameters;
+  Handle g = group(file, "parameters");
+  auto real = [&](const char* name, double x) {
+    numeric_attribute(g.id, name, H5T_IEEE_F64LE, std::vector<double>{x}, true);
+  };
+  auto integer = [&](const char* name, std::int64_t x) {
+    numeric_attribute(g.id, name, H5T_STD_I64LE, std::vector<std::int64_t>{x}, true);
+  };
+  integer("dimension", p.dimension);
+  integer("particles", p.particles);
+  real("density", p.density);
+  real("restitution", p.restitution);
+  string_attribute(g.id, "randomize", std::string(sim::to_string(p.randomize)));
+  numeric_attribute(g.id, "seed", H5T_STD_U64LE, std::vector<std::uint64_t>{p.seed}, true);
+  real("t_end", p.t_end);
+  real("relax_collisions_per_particle", p.relax_collisions_per_particle);
+  real("tc", p.tc);
+  integer("samples_per_decade", p.samples_per_decade);
+  real("t_first_sample", p.t_first_sample);
+  integer("contact_statistics", p.contact_statistics ? 1 : 0);
+  numeric_attribute(g.id, "snapshot_times", H5T_IEEE_F64LE, p.snapshot_times, false);
+  numeric_attribute(g.id, "max_collisions", H5T_STD_U64LE,
+                    std::vector<std::uint64_t>{p.max_collisions}, true);
+  real("min_temperature", p.min_temperature);
+  string_attribute(g.id, "stop_reason", r.stop_reason);
+  string_attribute(g.id, "version", r.version);
+}
+
+void write_contents(hid_t file, const sim::RunResult& r) {
+  {
+    Handle h5md = group(file, "h5md");
+    numeric_attribute(h5md.id, "version", H5T_STD_I32LE, std::vector<std::int32_t>{1, 1}, false);
+    Handle author = group(h5md.id, "author");
+    string_attribute(author.id, "name", "molchaos");
+    Handle creator = group(h5md.id, "creator");
+    string_attribute(creator.id, "name", "molchaos");
+    string_attribute(creator.id, "version", r.version);
+  }
+  Handle particles = group(file, "particles");
+  Handle all = group(particles.id, "all");
+  {
+    Handle box = group(all.id, "box");
+    numeric_attribute(box.id, "dimension", H5T_STD_I32LE,
+                      std::vector<std::int32_t>{r.parameters.dimension}, true);
+    boundary_attribute(box.id, r.parameters.dimension);
+    // The box is fixed: edges is a plain dataset (H5MD 1.1, "box" section).
+    const double side = sim::box_side(r.parameters);
+    const std::vector<double> edges(static_cast<std::size_t>(r.parameters.dimension), side);
+    dataset(box.id, "edges", H5T_IEEE_F64LE, {edges.size()}, edges.data());
+  }
+  time_series(all.id, "position", r, true);
+  time_series(all.id, "velocity", r, false);
+  parameters_group(file, r);
+}
+
+}  // namespace
+
+void write_h5md_file(const sim::RunResult& r, const std::string& path) {
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  try {
+    Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                      temporary.c_str()),
+                H5Fclose};
+    write_contents(file.id, r);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace molchaos::io

@@ -1,0 +1,56 @@
+// Extended XYZ as read by ASE and OVITO: the comment line holds key=value pairs.
+#include "molchaos/io/xyz_writer.hpp"
+
+#include <unistd.h>
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace molchaos::io {
+namespace {
+
+// Shortest text that reads back to the same double.
+std::string num(double x) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, end);
+}
+
+}  // namespace
+
+void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
+  const auto d = static_cast<std::size_t>(dimension);
+  const std::size_t n = s.positions.size() / d;
+  const std::string L = num(s.box);
+  // Disks: the third cell vector has the disk diameter as length and is not periodic.
+  const std::string z = dimension == 3 ? L : "1";
+  out << n << '\n'
+      << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
+      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << num(s.t) << " pbc=\""
+      << (dimension == 3 ? "T T T" : "T T F") << "\"\n";
+  for (std::size_t i = 0; i < n; ++i) {
+    out << 'X';
+    for (std::size_t a = 0; a < 3; ++a) out << ' ' << (a < d ? num(s.positions[i * d + a]) : "0");
+    for (std::size_t a = 0; a < 3; ++a) out << ' ' << (a < d ? num(s.velocities[i * d + a]) : "0");
+    out << '\n';
+  }
+}
+
+void write_xyz_file(const sim::RunResult& r, const std::string& path) {
+  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error("cannot write " + temporary);
+    for (const auto& s : r.snapshots) write_xyz_frame(s, r.parameters.dimension, out);
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(temporary);
+      throw std::runtime_error("write failed: " + temporary);
+    }
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace molchaos::io

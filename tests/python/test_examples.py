@@ -1,0 +1,36 @@
+"""The example scripts run on small inputs and give what they claim."""
+
+import importlib.util
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+EXAMPLES = os.environ.get("MOLCHAOS_EXAMPLES", "examples")
+
+
+def load(name):
+    spec = importlib.util.spec_from_file_location(name, os.path.join(EXAMPLES, name + ".py"))
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_haff_ensemble_fit_agrees_with_theory():
+    fit = load("haff_ensemble").main(runs=4, particles=400, t_end=40.0)
+    assert np.isfinite(fit["tau0"]) and fit["tau0_error"] > 0
+    # Independent runs: their tau0 spread is the standard error. 5 of them bound the difference
+    # (t distribution with 3 degrees of freedom: two-sided p = 0.015); the theory's quadrature
+    # error is negligible beside it.
+    assert abs(fit["tau0"] - fit["theory"]) < 5 * fit["tau0_error"] + fit["theory_error"]
+
+
+def test_fig4_from_reproduce_quick(molchaos_bin, tmp_path):
+    subprocess.run([molchaos_bin, "reproduce", "--quick", "--seeds", "1", "--no-figures",
+                    "--threads", "2", "--out", str(tmp_path)], check=True, capture_output=True)
+    png = tmp_path / "fig4.png"
+    table = load("fig4_from_csv").main(tmp_path / "fig4_A_of_eps.csv", png)
+    assert len(table) > 0 and {"A", "A_err", "A_theory"} <= set(table.columns)
+    assert png.stat().st_size > 10000
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -1,0 +1,104 @@
+"""The Python module against the CLI: the same functions, so the same numbers bit for bit."""
+
+import json
+import subprocess
+
+import numpy as np
+import pytest
+
+import molchaos
+
+
+def test_theory_equals_cli_json(molchaos_bin):
+    out = subprocess.run(
+        [molchaos_bin, "theory", "--dim", "2", "--restitution", "0.9", "--density", "0.05",
+         "--json"],
+        check=True, capture_output=True, text=True).stdout
+    cli = json.loads(out)
+    py = molchaos.theory(dim=2, restitution=0.9, density=0.05)
+    # Same library call on both sides: identical doubles, no tolerance needed.
+    assert py["A"]["value"] == cli["A"]
+    assert py["A"]["error"] == cli["A_error"]
+    assert py["tau0"]["value"] == cli["tau0"]
+    assert py["mu2"]["value"] == cli["mu2"]
+    assert py["g2"]["value"] == cli["g2"]
+    assert py["a2"]["value"] == cli["a2"]
+    # A = tau0 (1 - eps^2) (paper, Sec. 2), within the propagated quadrature error.
+    assert abs(py["A"]["value"] - py["tau0"]["value"] * (1 - 0.9**2)) <= \
+        py["A"]["error"] + py["tau0"]["error"] * (1 - 0.9**2) + 1e-15 * py["A"]["value"]
+
+
+def test_theory_rejects_bad_density():
+    with pytest.raises(ValueError, match="density"):
+        molchaos.theory(dim=2, restitution=0.9, density=2.0)
+
+
+SMALL = dict(dim=2, particles=200, density=0.05, restitution=0.9, seed=3, t_end=20.0,
+             relax_collisions_per_particle=5.0, samples_per_decade=5)
+
+
+def test_simulate_equals_cli_run(molchaos_bin, tmp_path):
+    run = molchaos.simulate(**SMALL)
+    for key in ("t", "T", "a2", "collisions"):
+        assert isinstance(run[key], np.ndarray)
+        assert len(run[key]) == len(run["t"])
+    assert run["stop_reason"] == "t_end"
+    assert run["parameters"]["particles"] == 200
+    out = tmp_path / "run.csv"
+    subprocess.run(
+        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
+         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
+         "--samples-per-decade", "5", "--quiet", "--out", str(out)],
+        check=True, capture_output=True)
+    frame, meta = molchaos.read_run_csv(out)
+    # Same seed, same engine: the same trajectory, so the same doubles.
+    np.testing.assert_array_equal(frame["t"].to_numpy(), run["t"])
+    np.testing.assert_array_equal(frame["T"].to_numpy(), run["T"])
+    np.testing.assert_array_equal(frame["a2"].to_numpy(), run["a2"])
+    np.testing.assert_array_equal(frame["collisions"].to_numpy(), run["collisions"])
+    assert meta["seed"] == 3 and meta["restitution"] == 0.9 and meta["dimension"] == 2
+    assert meta["stop_reason"] == run["stop_reason"]
+    assert meta["collisions"] == run["total_collisions"]
+
+
+def test_simulate_is_reproducible_and_cools():
+    a = molchaos.simulate(**SMALL)
+    b = molchaos.simulate(**SMALL)
+    np.testing.assert_array_equal(a["T"], b["T"])
+    assert a["T"][0] == pytest.approx(1.0, rel=1e-12)  # T0 = 1 by construction
+    assert np.all(np.diff(a["T"]) <= 0)  # inelastic: energy never grows between samples
+    # And it cools like Haff's law: with tau0 from the theory, T(20) = 1/(1 + 20/tau0)^2. One run of
+    # N = 200 disks fluctuates by about sqrt(2/(d N)) = 7 % in T; 5 such deviations bound it.
+    tau0 = molchaos.theory(dim=2, restitution=0.9, density=0.05)["tau0"]["value"]
+    haff = 1.0 / (1.0 + a["t"][-1] / tau0) ** 2
+    assert abs(a["T"][-1] - haff) < 5 * np.sqrt(2 / (2 * 200)) * haff
+    assert np.all(np.diff(a["collisions"].astype(np.int64)) >= 0)
+
+
+@pytest.mark.parametrize("name,value", [("restitution", 1.5), ("density", 5.0),
+                                        ("particles", 1), ("t_end", -1.0)])
+def test_simulate_bad_parameter_names_it(name, value):
+    kwargs = dict(SMALL)
+    kwargs[name] = value
+    with pytest.raises(ValueError, match=name):
+        molchaos.simulate(**kwargs)
+
+
+def test_simulate_unknown_keyword():
+    with pytest.raises(TypeError, match="restitutoin"):
+        molchaos.simulate(restitutoin=0.9)
+
+
+def test_simulate_snapshots_match_snapshot_csv(molchaos_bin, tmp_path):
+    run = molchaos.simulate(**SMALL, snapshot_times=[5.0])
+    out = tmp_path / "run.csv"
+    subprocess.run(
+        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
+         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
+         "--samples-per-decade", "5", "--snapshot-times", "5", "--quiet", "--out", str(out)],
+        check=True, capture_output=True)
+    frame, meta = molchaos.read_snapshot_csv(tmp_path / "run.snapshot0.csv")
+    snap = run["snapshots"][0]
+    assert meta["t"] == snap["t"] and meta["box"] == snap["box"]
+    np.testing.assert_array_equal(frame[["x", "y"]].to_numpy(), snap["positions"])
+    np.testing.assert_array_equal(frame[["vx", "vy"]].to_numpy(), snap["velocities"])

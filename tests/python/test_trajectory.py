@@ -1,0 +1,73 @@
+"""H5MD and extended XYZ files of `molchaos simulate`, read by h5py and ASE (readers written
+elsewhere), against the snapshot CSVs of the same run: the same doubles come back."""
+
+import subprocess
+
+import ase.io
+import h5py
+import numpy as np
+import pytest
+
+import molchaos
+
+TIMES = [2.0, 5.0]
+
+
+@pytest.fixture(scope="module", params=[2, 3])
+def run(request, molchaos_bin, tmp_path_factory):
+    dim = request.param
+    d = tmp_path_factory.mktemp(f"traj{dim}")
+    subprocess.run(
+        [molchaos_bin, "simulate", "--dim", str(dim), "--particles", "150", "--density", "0.05",
+         "--restitution", "0.9", "--seed", "7", "--t-end", "6", "--relax", "5", "--quiet",
+         "--snapshot-times", *map(str, TIMES), "--out", str(d / "run.csv"),
+         "--trajectory", str(d / "run.h5"), "--xyz", str(d / "run.xyz")],
+        check=True, capture_output=True)
+    snaps = [molchaos.read_snapshot_csv(d / f"run.snapshot{k}.csv") for k in range(len(TIMES))]
+    return dim, d, snaps
+
+
+def test_h5md_layout_and_values(run):
+    dim, d, snaps = run
+    with h5py.File(d / "run.h5", "r") as f:
+        assert list(f["h5md"].attrs["version"]) == [1, 1]
+        assert "name" in f["h5md/author"].attrs
+        assert f["h5md/creator"].attrs["name"] == b"molchaos" or \
+            f["h5md/creator"].attrs["name"] == "molchaos"
+        box = f["particles/all/box"]
+        assert box.attrs["dimension"] == dim
+        assert [b.decode() if isinstance(b, bytes) else b for b in box.attrs["boundary"]] == \
+            ["periodic"] * dim
+        for name, cols in (("position", ["x", "y", "z"][:dim]),
+                           ("velocity", ["vx", "vy", "vz"][:dim])):
+            el = f[f"particles/all/{name}"]
+            value = el["value"][()]
+            assert value.dtype == np.float64 and value.shape == (len(TIMES), 150, dim)
+            np.testing.assert_array_equal(el["time"][()], [m["t"] for _, m in snaps])
+            np.testing.assert_array_equal(el["step"][()], np.arange(len(TIMES)))
+            for k, (frame, _) in enumerate(snaps):
+                np.testing.assert_array_equal(value[k], frame[cols].to_numpy())
+        np.testing.assert_array_equal(box["edges"][()], [snaps[0][1]["box"]] * dim)
+        params = f["parameters"].attrs
+        assert params["dimension"] == dim and params["seed"] == 7
+        assert params["restitution"] == 0.9
+        np.testing.assert_array_equal(params["snapshot_times"], TIMES)
+    traj = molchaos.read_trajectory(d / "run.h5")
+    assert traj["position"].shape == (len(TIMES), 150, dim)
+
+
+def test_extended_xyz_read_by_ase(run):
+    dim, d, snaps = run
+    frames = ase.io.read(d / "run.xyz", index=":", format="extxyz")
+    assert len(frames) == len(TIMES)
+    for atoms, (frame, meta) in zip(frames, snaps):
+        assert len(atoms) == 150
+        cols = ["x", "y", "z"][:dim]
+        np.testing.assert_array_equal(atoms.get_positions()[:, :dim], frame[cols].to_numpy())
+        vel = atoms.arrays["vel"]
+        np.testing.assert_array_equal(vel[:, :dim], frame[["vx", "vy", "vz"][:dim]].to_numpy())
+        if dim == 2:
+            assert np.all(atoms.get_positions()[:, 2] == 0.0)
+        assert atoms.cell[0, 0] == meta["box"] and atoms.cell[1, 1] == meta["box"]
+        assert list(atoms.pbc) == [True, True, dim == 3]
+        assert atoms.info["Time"] == meta["t"]
