@@ -143,7 +143,8 @@ int slab_cells(const int* coords, int cps, int axis, int dir, int* out) {
 // Construction and initial state.
 
 template <int D>
-Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
+Engine<D>::Engine(const Parameters& p)
+    : model_(CollisionModel::from(p)), shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
   validate(p);
   if (p.dimension != D) throw std::invalid_argument("dimension: engine instantiated for another d");
   n_ = static_cast<std::int32_t>(p.particles);
@@ -189,9 +190,6 @@ Engine<D>::Engine(const Parameters& p) : shuffle_rng_(p.seed ^ 0x243f6a8885a308d
       }
   }
 
-  rule_.restitution = p.restitution;
-  mode_ = p.randomize;
-  tc_ = p.tc;
   contacts_on_ = p.contact_statistics;
   collision_limit_ = p.max_collisions;
   min_temperature_ = p.min_temperature;
@@ -391,20 +389,16 @@ void Engine<D>::set_state(const std::vector<double>& positions,
 
 template <int D>
 void Engine<D>::relax(double collisions_per_particle) {
-  const CollisionRule rule = rule_;
-  const Randomization mode = mode_;
   const std::uint64_t limit = collision_limit_;
-  const double tc = tc_, t_min = min_temperature_;
-  rule_.restitution = 1.0;
-  mode_ = Randomization::none;
-  tc_ = 0;
+  const double t_min = min_temperature_;
   min_temperature_ = 0;
   const auto target = static_cast<std::uint64_t>(
       std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
   if (target > 0) {
     collision_limit_ = collisions_ + target;
     for (;;) {
-      const Outcome outcome = dispatch(k_inf, std::numeric_limits<std::uint64_t>::max());
+      const Outcome outcome =
+          dispatch(k_inf, std::numeric_limits<std::uint64_t>::max(), CollisionModel::elastic());
       if (outcome == Outcome::resync) {
         resync();
         continue;
@@ -412,10 +406,7 @@ void Engine<D>::relax(double collisions_per_particle) {
       if (outcome != Outcome::paused) break;
     }
   }
-  rule_ = rule;
-  mode_ = mode;
   collision_limit_ = limit;
-  tc_ = tc;
   min_temperature_ = t_min;
   stop_ = false;
   stop_reason_.clear();
@@ -449,8 +440,8 @@ void Engine<D>::relax(double collisions_per_particle) {
 
 template <int D>
 template <class Shuffle>
-auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shuffle& shuffle)
-    -> Outcome {
+auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
+                           const Shuffle& shuffle) -> Outcome {
   const double rescale_below = k_rescale_temperature * n_ * D;  // in units of sum u^2
   for (;;) {
     const auto [t, i] = calendar_.top();  // the earliest pending event
@@ -485,7 +476,7 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
         continue;
       }
       const std::uint64_t before = collisions_;
-      collide(i, j, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
+      collide(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
       if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
       if (sum_u2_ < rescale_below || now_ > k_rebase_time) return Outcome::resync;
@@ -495,16 +486,17 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Shu
 }
 
 template <int D>
-auto Engine<D>::dispatch(double tau_stop, std::uint64_t event_limit) -> Outcome {
-  switch (mode_) {
+auto Engine<D>::dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model)
+    -> Outcome {
+  switch (model.shuffle) {
     case Randomization::paper:
-      return run_events(tau_stop, event_limit, PaperShuffle{});
+      return run_events(tau_stop, event_limit, model, PaperShuffle{});
     case Randomization::flux:
-      return run_events(tau_stop, event_limit, FluxShuffle{});
+      return run_events(tau_stop, event_limit, model, FluxShuffle{});
     case Randomization::none:
       break;
   }
-  return run_events(tau_stop, event_limit, NoShuffle{});
+  return run_events(tau_stop, event_limit, model, NoShuffle{});
 }
 
 template <int D>
@@ -514,7 +506,7 @@ auto Engine<D>::advance_to(double t, std::uint64_t max_events) -> Status {
       max_events == std::numeric_limits<std::uint64_t>::max() ? max_events : events_ + max_events;
   for (;;) {
     const double tau_stop = (t - t_offset_) / theta_;
-    switch (dispatch(tau_stop, limit)) {
+    switch (dispatch(tau_stop, limit, model_)) {
       case Outcome::reached:
         now_ = std::max(now_, tau_stop);
         return Status::reached;
@@ -532,14 +524,15 @@ auto Engine<D>::advance_to(double t, std::uint64_t max_events) -> Status {
 template <int D>
 auto Engine<D>::step() -> Status {
   if (stop_) return Status::stopped;
-  const Outcome outcome = dispatch(k_inf, events_ + 1);
+  const Outcome outcome = dispatch(k_inf, events_ + 1, model_);
   if (outcome == Outcome::resync) resync();
   return outcome == Outcome::stopped ? Status::stopped : Status::paused;
 }
 
 template <int D>
 template <class Shuffle>
-void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) {
+void Engine<D>::collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
+                        const Shuffle& shuffle) {
   advance_particle(i);
   advance_particle(j);
   double* vi = part_[i].v;
@@ -569,8 +562,7 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) 
 
   // TC model (Luding & McNamara): elastic if either particle collided less than tc ago.
   const double since = now_ - std::max(last_collision_time_[i], last_collision_time_[j]);
-  double eps = rule_.restitution;
-  if (tc_ > 0 && since * theta_ < tc_) eps = 1.0;
+  const bool elastic = model.tc.apply(since * theta_);
   // Inelastic collapse: an unbroken run of collisions ever closer in time.
   micro_run_ = since < micro_interval_ ? micro_run_ + 1 : 0;
 
@@ -596,13 +588,18 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) 
 
   double energy_before = 0;
   for (int a = 0; a < D; ++a) energy_before += vi[a] * vi[a] + vj[a] * vj[a];
-  CollisionRule::apply<D>(vi, vj, e, eps);
+  const double energy_lost = model.rule.template apply<D>(vi, vj, e, gn, elastic);
   double energy_after = 0;
   for (int a = 0; a < D; ++a) energy_after += vi[a] * vi[a] + vj[a] * vj[a];
-  sum_u2_ -= 0.5 * (1.0 - eps * eps) * gn * gn;
+  sum_u2_ -= 2.0 * energy_lost;  // sum u^2 is twice the kinetic energy
   const double inv_theta2 = 1.0 / (theta_ * theta_);
-  last_collision_ = {
-      i, j, gn / theta_, eps, 0.5 * energy_before * inv_theta2, 0.5 * energy_after * inv_theta2};
+  last_collision_ = {i,
+                     j,
+                     gn / theta_,
+                     elastic,
+                     energy_lost * inv_theta2,
+                     0.5 * energy_before * inv_theta2,
+                     0.5 * energy_after * inv_theta2};
   ++part_[i].counter;
   ++part_[j].counter;
   last_collision_time_[i] = last_collision_time_[j] = now_;
@@ -610,11 +607,12 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle) 
 
   if constexpr (Shuffle::active) {
     const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
-    const auto [k, l] = shuffle.template pick<D>([this](std::int32_t m) { return part_[m].v; }, n_,
-                                                 i, j, e, temperature, shuffle_rng_);
-    advance_particle(k);
-    advance_particle(l);
-    exchange_velocities<D>(vi, vj, part_[k].v, part_[l].v, e);
+    const auto [k, l] = apply_shuffle<D>(
+        shuffle, [this](std::int32_t m) { return part_[m].v; }, n_, i, j, e, temperature,
+        shuffle_rng_, [this](std::int32_t donor_k, std::int32_t donor_l) {
+          advance_particle(donor_k);
+          advance_particle(donor_l);
+        });
     ++part_[k].counter;
     ++part_[l].counter;
     predict(k);

@@ -21,6 +21,7 @@
 #endif
 
 #include "molchaos/sim/collision.hpp"
+#include "molchaos/sim/collision_model.hpp"
 #include "molchaos/sim/event_calendar.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
@@ -32,7 +33,8 @@ namespace molchaos::sim {
 struct CollisionRecord {
   std::int32_t i = -1, j = -1;
   double normal_velocity = 0;                  // (v_i - v_j).e before the collision
-  double restitution_used = 1;                 // 1 when the TC model made it elastic
+  bool made_elastic = false;                   // by the TC model
+  double energy_lost = 0;                      // as the collision rule reports it
   double energy_before = 0, energy_after = 0;  // of the pair i, j (before any shuffle)
 };
 
@@ -41,11 +43,12 @@ class Engine {
  public:
   /// Builds the initial state: random non-overlapping positions, Maxwell velocities with zero
   /// momentum and T = 1 exactly. Throws std::runtime_error when the density is too high to place
-  /// the particles. Does not relax (call relax()).
+  /// the particles. Does not relax (call relax()). The collision model of the run (rule, TC,
+  /// shuffle) is CollisionModel::from(p), fixed for the engine's life.
   explicit Engine(const Parameters& p);
 
-  /// Elastic dynamics (no shuffle) for the given collisions per particle, then T rescaled to 1,
-  /// time and counters reset to 0.
+  /// A run with CollisionModel::elastic() for the given collisions per particle, then T rescaled
+  /// to 1, time and counters reset to 0.
   void relax(double collisions_per_particle);
 
   /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
@@ -82,13 +85,13 @@ class Engine {
   Sample sample();  // takes (and resets) the contact moments accumulated since the last call
   Snapshot snapshot() const;
 
-  /// Run settings that may change between relaxation and the cooling run.
-  void set_restitution(double eps) { rule_.restitution = eps; }
-  void set_randomization(Randomization mode) { mode_ = mode; }
+  const CollisionModel& collision_model() const { return model_; }
+
+  /// Stop conditions (no physics): after `limit` collisions in all (0 = none), when T falls below
+  /// t_min (0 = never).
   void set_contact_statistics(bool on) { contacts_on_ = on; }
   void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
   void set_min_temperature(double t_min) { min_temperature_ = t_min; }
-  void set_tc(double tc) { tc_ = tc; }
   /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
   void resume() {
     stop_ = false;
@@ -103,10 +106,12 @@ class Engine {
  private:
   enum class Outcome { reached, resync, paused, stopped };
   template <class Shuffle>
-  Outcome run_events(double tau_stop, std::uint64_t event_limit, const Shuffle& shuffle);
-  Outcome dispatch(double tau_stop, std::uint64_t event_limit);
+  Outcome run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
+                     const Shuffle& shuffle);
+  Outcome dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model);
   template <class Shuffle>
-  void collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle);
+  void collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
+               const Shuffle& shuffle);
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
   double pair_time(std::int32_t i, std::int32_t j) const;
@@ -233,10 +238,8 @@ class Engine {
   double sum_u2_ = 0;  // sum of internal u^2, updated per collision, recomputed at resync
   std::uint64_t collisions_ = 0, events_ = 0;
 
-  // Settings.
-  CollisionRule rule_;
-  Randomization mode_ = Randomization::none;
-  double tc_ = 0;
+  // The run's physics, and its stop conditions.
+  const CollisionModel model_;
   bool contacts_on_ = false;
   std::uint64_t collision_limit_ = 0;
   double min_temperature_ = 0;
