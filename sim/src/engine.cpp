@@ -1,5 +1,5 @@
 // The event-driven engine: initial state, event loop, cell lists, event calendar, observables.
-// See engine.hpp for the design; the event loop is Engine<D>::run_events.
+// See engine.hpp for the design; the event loop is Engine<D, Observer>::run_events.
 #include "molchaos/sim/engine.hpp"
 
 #include <algorithm>
@@ -142,8 +142,8 @@ int slab_cells(const int* coords, int cps, int axis, int dir, int* out) {
 // ---------------------------------------------------------------------------------------------
 // Construction and initial state.
 
-template <int D>
-Engine<D>::Engine(const Parameters& p)
+template <int D, class Observer>
+Engine<D, Observer>::Engine(const Parameters& p)
     : model_(CollisionModel::from(p)), shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
   validate(p);
   if (p.dimension != D) throw std::invalid_argument("dimension: engine instantiated for another d");
@@ -190,7 +190,6 @@ Engine<D>::Engine(const Parameters& p)
       }
   }
 
-  contacts_on_ = p.contact_statistics;
   collision_limit_ = p.max_collisions;
   min_temperature_ = p.min_temperature;
   micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
@@ -221,8 +220,8 @@ Engine<D>::Engine(const Parameters& p)
 
 // Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
 // fraction); otherwise a simple lattice with random vacancies and jitter. Relaxation melts either.
-template <int D>
-void Engine<D>::place_particles(Rng& rng) {
+template <int D, class Observer>
+void Engine<D, Observer>::place_particles(Rng& rng) {
   const double packing = (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) *
                          static_cast<double>(n_) / std::pow(box_, D);
   const double rsa_limit = D == 2 ? 0.25 : 0.2;
@@ -338,8 +337,8 @@ void Engine<D>::place_particles(Rng& rng) {
   }
 }
 
-template <int D>
-void Engine<D>::draw_velocities(Rng& rng) {
+template <int D, class Observer>
+void Engine<D, Observer>::draw_velocities(Rng& rng) {
   for (auto& particle : part_)
     for (double& v : particle.v) v = rng.normal();
   double mean[D] = {};
@@ -358,8 +357,8 @@ void Engine<D>::draw_velocities(Rng& rng) {
   now_ = 0;
 }
 
-template <int D>
-void Engine<D>::set_state(const std::vector<double>& positions,
+template <int D, class Observer>
+void Engine<D, Observer>::set_state(const std::vector<double>& positions,
                           const std::vector<double>& velocities) {
   const std::size_t size = static_cast<std::size_t>(n_) * D;
   if (positions.size() != size || velocities.size() != size)
@@ -387,8 +386,8 @@ void Engine<D>::set_state(const std::vector<double>& positions,
   rebuild_events();
 }
 
-template <int D>
-void Engine<D>::relax(double collisions_per_particle) {
+template <int D, class Observer>
+void Engine<D, Observer>::relax(double collisions_per_particle) {
   const std::uint64_t limit = collision_limit_;
   const double t_min = min_temperature_;
   min_temperature_ = 0;
@@ -431,16 +430,16 @@ void Engine<D>::relax(double collisions_per_particle) {
   collisions_ = events_ = 0;
   micro_run_ = 0;
   stalled_events_ = 0;
-  contacts_ = {};
+  observer_ = Observer{};
   rebuild_events();
 }
 
 // ---------------------------------------------------------------------------------------------
 // The event loop.
 
-template <int D>
+template <int D, class Observer>
 template <class Shuffle>
-auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
+auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
                            const Shuffle& shuffle) -> Outcome {
   const double rescale_below = k_rescale_temperature * n_ * D;  // in units of sum u^2
   for (;;) {
@@ -485,8 +484,8 @@ auto Engine<D>::run_events(double tau_stop, std::uint64_t event_limit, const Col
   }
 }
 
-template <int D>
-auto Engine<D>::dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model)
+template <int D, class Observer>
+auto Engine<D, Observer>::dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model)
     -> Outcome {
   switch (model.shuffle) {
     case Randomization::paper:
@@ -499,8 +498,8 @@ auto Engine<D>::dispatch(double tau_stop, std::uint64_t event_limit, const Colli
   return run_events(tau_stop, event_limit, model, NoShuffle{});
 }
 
-template <int D>
-auto Engine<D>::advance_to(double t, std::uint64_t max_events) -> Status {
+template <int D, class Observer>
+auto Engine<D, Observer>::advance_to(double t, std::uint64_t max_events) -> Status {
   if (stop_) return Status::stopped;
   const std::uint64_t limit =
       max_events == std::numeric_limits<std::uint64_t>::max() ? max_events : events_ + max_events;
@@ -521,17 +520,17 @@ auto Engine<D>::advance_to(double t, std::uint64_t max_events) -> Status {
   }
 }
 
-template <int D>
-auto Engine<D>::step() -> Status {
+template <int D, class Observer>
+auto Engine<D, Observer>::step() -> Status {
   if (stop_) return Status::stopped;
   const Outcome outcome = dispatch(k_inf, events_ + 1, model_);
   if (outcome == Outcome::resync) resync();
   return outcome == Outcome::stopped ? Status::stopped : Status::paused;
 }
 
-template <int D>
+template <int D, class Observer>
 template <class Shuffle>
-void Engine<D>::collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
+void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
                         const Shuffle& shuffle) {
   advance_particle(i);
   advance_particle(j);
@@ -566,40 +565,12 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const CollisionModel& mo
   // Inelastic collapse: an unbroken run of collisions ever closer in time.
   micro_run_ = since < micro_interval_ ? micro_run_ + 1 : 0;
 
-  if (contacts_on_) {
-    const double scale = 1.0 / std::sqrt(2.0 * sum_u2_ / (static_cast<double>(n_) * D));
-    double c1e = 0, c2e = 0, c12 = 0, g2 = 0;
-    for (int a = 0; a < D; ++a) {
-      c1e += vi[a] * e[a];
-      c2e += vj[a] * e[a];
-      c12 += vi[a] * vj[a];
-      g2 += (vi[a] - vj[a]) * (vi[a] - vj[a]);
-    }
-    c1e *= scale;
-    c2e *= scale;
-    const double gne = c1e - c2e;
-    ++contacts_.count;
-    contacts_.sum_c1e_c2e += c1e * c2e;
-    contacts_.sum_c1_dot_c2 += c12 * scale * scale;
-    contacts_.sum_gn2 += gne * gne;
-    contacts_.sum_abs_gn += std::fabs(gne);
-    contacts_.sum_g2 += g2 * scale * scale;
-  }
-
-  double energy_before = 0;
-  for (int a = 0; a < D; ++a) energy_before += vi[a] * vi[a] + vj[a] * vj[a];
+  const CollisionView<D> contact{
+      i, j, e, vi, vj, gn, sum_u2_ / (static_cast<double>(n_) * D), theta_};
+  observer_.before(contact);
   const double energy_lost = model.rule.template apply<D>(vi, vj, e, gn, elastic);
-  double energy_after = 0;
-  for (int a = 0; a < D; ++a) energy_after += vi[a] * vi[a] + vj[a] * vj[a];
   sum_u2_ -= 2.0 * energy_lost;  // sum u^2 is twice the kinetic energy
-  const double inv_theta2 = 1.0 / (theta_ * theta_);
-  last_collision_ = {i,
-                     j,
-                     gn / theta_,
-                     elastic,
-                     energy_lost * inv_theta2,
-                     0.5 * energy_before * inv_theta2,
-                     0.5 * energy_after * inv_theta2};
+  observer_.after(contact, CollisionOutcome{energy_lost, elastic});
   ++part_[i].counter;
   ++part_[j].counter;
   last_collision_time_[i] = last_collision_time_[j] = now_;
@@ -626,12 +597,12 @@ void Engine<D>::collide(std::int32_t i, std::int32_t j, const CollisionModel& mo
                  " consecutive collisions less than 1e-10 mean free times apart at t = " +
                  std::to_string(time()) + " (inelastic collapse; the TC model, tc > 0, avoids it)");
   if (collision_limit_ != 0 && collisions_ >= collision_limit_) request_stop("max_collisions");
-  if (min_temperature_ > 0 && sum_u2_ * inv_theta2 < min_temperature_ * n_ * D)
+  if (min_temperature_ > 0 && sum_u2_ * (1.0 / (theta_ * theta_)) < min_temperature_ * n_ * D)
     request_stop("min_temperature");
 }
 
-template <int D>
-void Engine<D>::request_stop(std::string reason) {
+template <int D, class Observer>
+void Engine<D, Observer>::request_stop(std::string reason) {
   if (stop_) return;
   stop_ = true;
   stop_reason_ = std::move(reason);
@@ -640,8 +611,8 @@ void Engine<D>::request_stop(std::string reason) {
 // ---------------------------------------------------------------------------------------------
 // Prediction.
 
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::advance_particle(std::int32_t i) {
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::advance_particle(std::int32_t i) {
   const double dt = now_ - part_[i].t;
   if (dt != 0) {
     for (int a = 0; a < D; ++a) part_[i].r[a] += part_[i].v[a] * dt;
@@ -649,8 +620,8 @@ template <int D>
   }
 }
 
-template <int D>
-void Engine<D>::position_now(std::int32_t i, double* r) const {
+template <int D, class Observer>
+void Engine<D, Observer>::position_now(std::int32_t i, double* r) const {
   const double dt = now_ - part_[i].t;
   for (int a = 0; a < D; ++a) r[a] = part_[i].r[a] + part_[i].v[a] * dt;
 }
@@ -658,8 +629,8 @@ void Engine<D>::position_now(std::int32_t i, double* r) const {
 // Time of contact of i (at now_) and j (at its local time), or +inf: the smaller root of
 // |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)). The reference
 // arithmetic; with SSE2 the engine uses pair_times() below, which does the same operations.
-template <int D>
-[[gnu::always_inline]] inline double Engine<D>::pair_time(std::int32_t i, std::int32_t j) const {
+template <int D, class Observer>
+[[gnu::always_inline]] inline double Engine<D, Observer>::pair_time(std::int32_t i, std::int32_t j) const {
   const Particle& pi = part_[i];
   const Particle& pj = part_[j];
   const double dtj = now_ - pj.t;
@@ -690,8 +661,8 @@ template <int D>
 // wrap adds or subtracts a masked box length instead of branching, which can only change the sign
 // of a zero component. collide() recomputes b with the scalar loop; the two can then differ at
 // most in the sign of a zero b, which both treat as "not approaching".
-template <int D>
-[[gnu::always_inline]] inline __m128d Engine<D>::pair_times(std::int32_t i, std::int32_t j1,
+template <int D, class Observer>
+[[gnu::always_inline]] inline __m128d Engine<D, Observer>::pair_times(std::int32_t i, std::int32_t j1,
                                                             std::int32_t j2) const {
   const Particle& pi = part_[i];
   const Particle& p1 = part_[j1];
@@ -732,9 +703,9 @@ template <int D>
 // The members of the Count given cells, gathered into candidates_: each cell's slot block is
 // copied whole (fixed-size copies, unrolled: no branch) and the write position advanced by the
 // member count. Returns the number of candidates.
-template <int D>
+template <int D, class Observer>
 template <int Count>
-[[gnu::always_inline]] inline std::int32_t Engine<D>::gather(const int* cells) {
+[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::gather(const int* cells) {
   std::int32_t* out = candidates_.data();
   const std::int32_t* blocks = slots_.data() + slots_origin_;
   const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
@@ -769,8 +740,8 @@ template <int Count>
 // list[count] must be writable: an odd list is padded there with i itself (its pair time with
 // itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
 // the branch predictor would have to guess.
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::earliest(std::int32_t i, std::int32_t* list,
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::earliest(std::int32_t i, std::int32_t* list,
                                                        std::int32_t count, double& best,
                                                        std::int32_t& partner) const {
   double b = best;
@@ -800,8 +771,8 @@ template <int D>
   partner = p;
 }
 
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::crossing(std::int32_t i) {
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::crossing(std::int32_t i) {
   const int* x = cell_xyz_[i].data();
   const Particle& p = part_[i];
   double best = k_inf;
@@ -821,8 +792,8 @@ template <int D>
 
 // True when the cell with coordinates x is not on the box boundary: its stencil needs no
 // periodic wrap and is given by fixed index offsets.
-template <int D>
-[[gnu::always_inline]] inline bool Engine<D>::interior_cell(const int* x) const {
+template <int D, class Observer>
+[[gnu::always_inline]] inline bool Engine<D, Observer>::interior_cell(const int* x) const {
   bool interior = true;
   for (int a = 0; a < D; ++a)
     interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
@@ -830,8 +801,8 @@ template <int D>
 }
 
 // The 3^D cells around i's cell (i's cell included).
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::stencil_of(std::int32_t i, int* stencil) const {
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, int* stencil) const {
   const int* x = cell_xyz_[i].data();
   if (interior_cell(x)) {
     for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
@@ -840,8 +811,8 @@ template <int D>
   }
 }
 
-template <int D>
-void Engine<D>::predict(std::int32_t i) {
+template <int D, class Observer>
+void Engine<D, Observer>::predict(std::int32_t i) {
   advance_particle(i);
   double best = k_inf;
   std::int32_t partner = -1;
@@ -866,8 +837,8 @@ void Engine<D>::predict(std::int32_t i) {
 }
 
 // Time at which i (at now_) leaves the sphere of radius shell_ around its list centre.
-template <int D>
-void Engine<D>::shell_exit(std::int32_t i) {
+template <int D, class Observer>
+void Engine<D, Observer>::shell_exit(std::int32_t i) {
   double b = 0, c = -shell_ * shell_, a = 0;
   for (int k = 0; k < D; ++k) {
     const double d = part_[i].r[k] - center_[D * i + k];
@@ -884,14 +855,14 @@ void Engine<D>::shell_exit(std::int32_t i) {
   ev_[i].cross_time = now_ + std::max(dt, 0.0);
 }
 
-template <int D>
-void Engine<D>::add_neighbour(std::int32_t i, std::int32_t j) {
+template <int D, class Observer>
+void Engine<D, Observer>::add_neighbour(std::int32_t i, std::int32_t j) {
   if (nl_count_[i] + 1 >= nl_capacity_) grow_neighbour_lists();  // a spare slot for earliest()
   neighbour_slots(i)[nl_count_[i]++] = j;
 }
 
-template <int D>
-void Engine<D>::remove_neighbour(std::int32_t i, std::int32_t j) {
+template <int D, class Observer>
+void Engine<D, Observer>::remove_neighbour(std::int32_t i, std::int32_t j) {
   std::int32_t* list = neighbour_slots(i);
   for (std::int32_t k = 0; k < nl_count_[i]; ++k)
     if (list[k] == j) {
@@ -900,8 +871,8 @@ void Engine<D>::remove_neighbour(std::int32_t i, std::int32_t j) {
     }
 }
 
-template <int D>
-void Engine<D>::grow_neighbour_lists() {
+template <int D, class Observer>
+void Engine<D, Observer>::grow_neighbour_lists() {
   const int old = nl_capacity_;
   nl_capacity_ = std::max(8, 2 * old);
   std::vector<std::int32_t> grown(static_cast<std::size_t>(n_) * nl_capacity_, -1);
@@ -914,8 +885,8 @@ void Engine<D>::grow_neighbour_lists() {
 
 // Adds every particle of the neighbouring cells whose centre lies within the list cutoff of i's
 // centre to i's list, and i to theirs (only j > i when `only_higher`, for the initial build).
-template <int D>
-void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
+template <int D, class Observer>
+void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
   const double cutoff2 = cutoff * cutoff;
   int stencil[stencil_size<D>()];
@@ -946,8 +917,8 @@ void Engine<D>::collect_neighbours(std::int32_t i, bool only_higher) {
   }
 }
 
-template <int D>
-void Engine<D>::rebuild_neighbours(std::int32_t i) {
+template <int D, class Observer>
+void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
   advance_particle(i);
   for (int a = 0; a < D; ++a) {
     double& x = part_[i].r[a];
@@ -966,8 +937,8 @@ void Engine<D>::rebuild_neighbours(std::int32_t i) {
   predict(i);
 }
 
-template <int D>
-void Engine<D>::build_neighbour_lists() {
+template <int D, class Observer>
+void Engine<D, Observer>::build_neighbour_lists() {
   center_.resize(static_cast<std::size_t>(n_) * D);
   nl_count_.assign(static_cast<std::size_t>(n_), 0);
   if (nl_capacity_ == 0) {
@@ -988,8 +959,8 @@ void Engine<D>::build_neighbour_lists() {
 // into range can hold new partners: pairs with the other cells were predicted before, by i or by
 // the partner (whichever changed last). One function for the whole event (the hot path of dilute
 // systems: most events are crossings).
-template <int D>
-void Engine<D>::cross_cell(std::int32_t i) {
+template <int D, class Observer>
+void Engine<D, Observer>::cross_cell(std::int32_t i) {
   advance_particle(i);
   Particle& p = part_[i];
   const int axis = ev_[i].cross_axis;
@@ -1039,8 +1010,8 @@ void Engine<D>::cross_cell(std::int32_t i) {
 // ---------------------------------------------------------------------------------------------
 // Units, cells, calendar.
 
-template <int D>
-void Engine<D>::resync() {
+template <int D, class Observer>
+void Engine<D, Observer>::resync() {
   for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
   sum_u2_ = sum_velocity_squared();
   const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
@@ -1062,8 +1033,8 @@ void Engine<D>::resync() {
 // Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
 // reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
 // Only called with every particle at now_ and all predictions about to be redone.
-template <int D>
-void Engine<D>::sort_by_cell() {
+template <int D, class Observer>
+void Engine<D, Observer>::sort_by_cell() {
   std::vector<std::int32_t> start(cells_ + 1, 0);
   for (const auto& particle : part_) ++start[particle.cell + 1];
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
@@ -1084,8 +1055,8 @@ void Engine<D>::sort_by_cell() {
   for (std::int32_t i = 0; i < n_; ++i) cell_insert(i, part_[i].cell);
 }
 
-template <int D>
-void Engine<D>::rebuild_events() {
+template <int D, class Observer>
+void Engine<D, Observer>::rebuild_events() {
   if (neighbour_lists_)  // cells by list centre = current position
     for (std::int32_t i = 0; i < n_; ++i) {
       for (int a = 0; a < D; ++a) {
@@ -1121,16 +1092,16 @@ void Engine<D>::rebuild_events() {
   }
 }
 
-template <int D>
-int Engine<D>::cell_of_position(const double* r) const {
+template <int D, class Observer>
+int Engine<D, Observer>::cell_of_position(const double* r) const {
   int x[D];
   for (int a = 0; a < D; ++a)
     x[a] = std::clamp(static_cast<int>(std::floor(r[a] / cell_width_)), 0, cells_per_side_ - 1);
   return cell_index<D>(x, cells_per_side_);
 }
 
-template <int D>
-void Engine<D>::build_cells() {
+template <int D, class Observer>
+void Engine<D, Observer>::build_cells() {
   allocate_cells();
   std::fill(slot_.begin(), slot_.end(), -1);
   for (std::int32_t i = 0; i < n_; ++i) {
@@ -1143,16 +1114,16 @@ void Engine<D>::build_cells() {
   }
 }
 
-template <int D>
-void Engine<D>::cell_insert(std::int32_t i, int c) {
+template <int D, class Observer>
+void Engine<D, Observer>::cell_insert(std::int32_t i, int c) {
   cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
   file_in_cell(i, c);
 }
 
 // Files i in the slots of cell c; cell_xyz_[i] must already hold c's coordinates (the hot path,
 // a cell crossing, knows them without divisions).
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::file_in_cell(std::int32_t i, int c) {
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
   if (cell_block(c)[0] == capacity_) [[unlikely]] grow_cells();  // i is not filed: skipped
   std::int32_t* block = cell_block(c);
   part_[i].cell = c;
@@ -1161,8 +1132,8 @@ template <int D>
   slot_[i] = k;
 }
 
-template <int D>
-void Engine<D>::allocate_cells() {
+template <int D, class Observer>
+void Engine<D, Observer>::allocate_cells() {
   const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
   // Room to align block 0 to 32 bytes (8 ints), and padding for gather()'s fixed-size copies.
   slots_.assign(cells_ * stride + 8 + k_gather_block + 1, 0);
@@ -1172,8 +1143,8 @@ void Engine<D>::allocate_cells() {
 }
 
 // More slots per cell (a cluster formed): doubles the block size and re-files every particle.
-template <int D>
-void Engine<D>::grow_cells() {
+template <int D, class Observer>
+void Engine<D, Observer>::grow_cells() {
   capacity_ = 2 * (capacity_ + 1) - 1;
   allocate_cells();
   for (std::int32_t k = 0; k < n_; ++k)
@@ -1185,8 +1156,8 @@ void Engine<D>::grow_cells() {
     }
 }
 
-template <int D>
-[[gnu::always_inline]] inline void Engine<D>::cell_remove(std::int32_t i) {
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
   // Swap-remove: the cell's last member takes i's slot.
   std::int32_t* block = cell_block(part_[i].cell);
   const std::int32_t last = block[block[0]--];
@@ -1195,48 +1166,48 @@ template <int D>
   slot_[i] = -1;
 }
 
-template <int D>
-double Engine<D>::sum_velocity_squared() const {
+template <int D, class Observer>
+double Engine<D, Observer>::sum_velocity_squared() const {
   double sum = 0;
   for (const auto& particle : part_)
     for (double v : particle.v) sum += v * v;
   return sum;
 }
 
-template <int D>
-void Engine<D>::scale_velocities(double factor) {
+template <int D, class Observer>
+void Engine<D, Observer>::scale_velocities(double factor) {
   for (auto& particle : part_)
     for (double& v : particle.v) v *= factor;
   sum_u2_ = sum_velocity_squared();
 }
 
-template <int D>
-double Engine<D>::time() const {
+template <int D, class Observer>
+double Engine<D, Observer>::time() const {
   return t_offset_ + theta_ * now_;
 }
 
-template <int D>
-double Engine<D>::temperature() const {
+template <int D, class Observer>
+double Engine<D, Observer>::temperature() const {
   const double sum = sum_velocity_squared();
   return sum / (static_cast<double>(n_) * D * theta_ * theta_);
 }
 
-template <int D>
-double Engine<D>::kinetic_energy() const {
+template <int D, class Observer>
+double Engine<D, Observer>::kinetic_energy() const {
   const double sum = sum_velocity_squared();
   return 0.5 * sum / (theta_ * theta_);
 }
 
-template <int D>
-std::array<double, D> Engine<D>::momentum() const {
+template <int D, class Observer>
+std::array<double, D> Engine<D, Observer>::momentum() const {
   std::array<double, D> p{};
   for (std::int32_t i = 0; i < n_; ++i)
     for (int a = 0; a < D; ++a) p[a] += part_[i].v[a] / theta_;
   return p;
 }
 
-template <int D>
-double Engine<D>::min_pair_distance() const {
+template <int D, class Observer>
+double Engine<D, Observer>::min_pair_distance() const {
   std::vector<double> r(static_cast<std::size_t>(n_) * D);
   for (std::int32_t i = 0; i < n_; ++i) position_now(i, &r[D * i]);
   double best = k_inf;
@@ -1259,16 +1230,16 @@ double Engine<D>::min_pair_distance() const {
   return std::sqrt(best);
 }
 
-template <int D>
-void Engine<D>::check_overlaps() const {
+template <int D, class Observer>
+void Engine<D, Observer>::check_overlaps() const {
   const double d = min_pair_distance();
   if (d < 1.0 - k_overlap_tolerance)
     throw std::logic_error("overlap: closest pair at distance " + std::to_string(d) + " after " +
                            std::to_string(events_) + " events");
 }
 
-template <int D>
-Sample Engine<D>::sample() {
+template <int D, class Observer>
+Sample Engine<D, Observer>::sample() const {
   Sample s;
   s.t = time();
   double m2 = 0, m4 = 0;
@@ -1308,13 +1279,11 @@ Sample Engine<D>::sample() {
   }
   s.density_mode = density_sum / D;
   s.velocity_mode = velocity_sum / D;
-  s.contacts = contacts_;
-  contacts_ = {};
   return s;
 }
 
-template <int D>
-Snapshot Engine<D>::snapshot() const {
+template <int D, class Observer>
+Snapshot Engine<D, Observer>::snapshot() const {
   Snapshot snap;
   snap.t = time();
   snap.box = box_;
@@ -1334,15 +1303,20 @@ Snapshot Engine<D>::snapshot() const {
   return snap;
 }
 
-template <int D>
-std::size_t Engine<D>::memory_bytes() const {
+template <int D, class Observer>
+std::size_t Engine<D, Observer>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
          bytes(slot_) + bytes(slots_) + bytes(center_) + bytes(nl_) +
          bytes(nl_count_) + calendar_.memory_bytes();
 }
 
-template class Engine<2>;
-template class Engine<3>;
+// The engines in use (add one line per dimension for a new collision observer).
+template class Engine<2, NoObserver>;
+template class Engine<3, NoObserver>;
+template class Engine<2, ContactStatistics>;
+template class Engine<3, ContactStatistics>;
+template class Engine<2, LastCollision>;
+template class Engine<3, LastCollision>;
 
 }  // namespace molchaos::sim

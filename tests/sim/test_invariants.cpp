@@ -51,7 +51,7 @@ void energy_loss_per_collision(Randomization mode, double density) {
   p.restitution = 0.8;
   p.randomize = mode;
   p.relax_collisions_per_particle = 2;
-  Engine<D> engine(p);
+  Engine<D, LastCollision> engine(p);
   engine.relax(p.relax_collisions_per_particle);
   engine.set_debug_overlap_check(k_check_every);
   std::uint64_t checked = 0;
@@ -61,7 +61,7 @@ void energy_loss_per_collision(Randomization mode, double density) {
     const std::uint64_t collisions = engine.collisions();
     engine.step();
     if (engine.collisions() == collisions) continue;
-    const CollisionRecord& c = engine.last_collision();
+    const CollisionRecord& c = engine.observer().record;
     const double eps = c.made_elastic ? 1.0 : p.restitution;
     const double expected = (1 - eps * eps) / 4 * c.normal_velocity * c.normal_velocity;
     // The loss the rule reports is its formula (exact but for the product's rounding).
@@ -167,7 +167,7 @@ BOOST_AUTO_TEST_CASE(tc_model_makes_recent_colliders_elastic) {
   p.density = 0.1;
   p.restitution = 0.5;
   p.tc = 1e9;
-  Engine<2> engine(p);
+  Engine<2, LastCollision> engine(p);
   engine.relax(2);
   std::uint64_t elastic = 0, total = 0;
   while (total < 3000) {
@@ -175,7 +175,7 @@ BOOST_AUTO_TEST_CASE(tc_model_makes_recent_colliders_elastic) {
     engine.step();
     if (engine.collisions() == collisions) continue;
     ++total;
-    if (engine.last_collision().made_elastic) ++elastic;
+    if (engine.observer().record.made_elastic) ++elastic;
   }
   // At most N/2 collisions can be a pair's first collision... each particle is first once.
   BOOST_TEST(total - elastic <= 500u);

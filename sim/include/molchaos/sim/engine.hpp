@@ -22,6 +22,7 @@
 
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/collision_model.hpp"
+#include "molchaos/sim/collision_observers.hpp"
 #include "molchaos/sim/event_calendar.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
@@ -29,16 +30,8 @@
 
 namespace molchaos::sim {
 
-/// The last collision, for tests of the collision rule (physical units).
-struct CollisionRecord {
-  std::int32_t i = -1, j = -1;
-  double normal_velocity = 0;                  // (v_i - v_j).e before the collision
-  bool made_elastic = false;                   // by the TC model
-  double energy_lost = 0;                      // as the collision rule reports it
-  double energy_before = 0, energy_after = 0;  // of the pair i, j (before any shuffle)
-};
-
-template <int D>
+/// Observer: the per-collision observer (collision_observers.hpp), NoObserver by default.
+template <int D, class Observer = NoObserver>
 class Engine {
  public:
   /// Builds the initial state: random non-overlapping positions, Maxwell velocities with zero
@@ -71,7 +64,8 @@ class Engine {
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
   const std::string& stop_reason() const { return stop_reason_; }
-  const CollisionRecord& last_collision() const { return last_collision_; }
+  Observer& observer() { return observer_; }
+  const Observer& observer() const { return observer_; }
   int cells_per_side() const { return cells_per_side_; }
   bool uses_neighbour_lists() const { return neighbour_lists_; }
 
@@ -82,14 +76,13 @@ class Engine {
   void check_overlaps() const;
 
   /// Observables at the current time.
-  Sample sample();  // takes (and resets) the contact moments accumulated since the last call
+  Sample sample() const;  // without contacts (the ContactStatistics observer has them)
   Snapshot snapshot() const;
 
   const CollisionModel& collision_model() const { return model_; }
 
   /// Stop conditions (no physics): after `limit` collisions in all (0 = none), when T falls below
   /// t_min (0 = never).
-  void set_contact_statistics(bool on) { contacts_on_ = on; }
   void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
   void set_min_temperature(double t_min) { min_temperature_ = t_min; }
   /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
@@ -240,7 +233,6 @@ class Engine {
 
   // The run's physics, and its stop conditions.
   const CollisionModel model_;
-  bool contacts_on_ = false;
   std::uint64_t collision_limit_ = 0;
   double min_temperature_ = 0;
   std::uint64_t debug_check_every_ = 0;
@@ -252,14 +244,16 @@ class Engine {
   std::uint64_t micro_run_ = 0;
   std::uint64_t stalled_events_ = 0;  // consecutive events at one time without a collision
 
-  // Observers.
-  ContactMoments contacts_;
-  CollisionRecord last_collision_;
+  Observer observer_;
   bool stop_ = false;
   std::string stop_reason_;
 };
 
-extern template class Engine<2>;
-extern template class Engine<3>;
+extern template class Engine<2, NoObserver>;
+extern template class Engine<3, NoObserver>;
+extern template class Engine<2, ContactStatistics>;
+extern template class Engine<3, ContactStatistics>;
+extern template class Engine<2, LastCollision>;
+extern template class Engine<3, LastCollision>;
 
 }  // namespace molchaos::sim
