@@ -23,14 +23,12 @@ constexpr double k_inf = std::numeric_limits<double>::infinity();
 constexpr double k_rescale_temperature = 1.0 / 16.0;
 // Internal time after which the clock is rebased to 0 (keeps time differences exact).
 constexpr double k_rebase_time = 1000.0;
-// Collapse: this many consecutive collisions, each within k_micro_fraction mean free times of a
-// previous collision of one of its particles.
-constexpr std::uint64_t k_micro_limit = 100000;
+// Collapse: k_collapse_collisions (stop_reason.hpp) consecutive collisions, each within
+// k_micro_fraction mean free times of a previous collision of one of its particles.
 constexpr double k_micro_fraction = 1e-10;
-// Dead-lock guard: this many consecutive events at one and the same time without any collision
-// can only be a numerical dead-lock (a cell crossing or a rejected contact re-predicted at now):
-// the run stops with a message instead of looping for ever.
-constexpr std::uint64_t k_stall_limit = 10'000'000;
+// Dead-lock guard: k_stall_events (stop_reason.hpp) consecutive events at one and the same time
+// without any collision can only be a numerical dead-lock (a cell crossing or a rejected contact
+// re-predicted at now): the run stops with a reason instead of looping for ever.
 // Mean number of particles per cell aimed at when choosing the cell width (cells >= sigma): in
 // dilute disks wider cells mean fewer cell crossings per collision but more pairs per prediction
 // (instruction counts at n = 0.05: best near 0.5 per cell); in d = 3 (memory-bound at N = 1e5)
@@ -381,7 +379,6 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
   micro_run_ = 0;
   stalled_events_ = 0;
   stop_ = false;
-  stop_reason_.clear();
   build_cells();
   rebuild_events();
 }
@@ -408,7 +405,6 @@ void Engine<D, Observer>::relax(double collisions_per_particle) {
   collision_limit_ = limit;
   min_temperature_ = t_min;
   stop_ = false;
-  stop_reason_.clear();
 
   // Back to T = 1 exactly, zero momentum, t = 0.
   for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
@@ -455,10 +451,8 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
     if (events_ >= event_limit) return Outcome::paused;
     if (t != now_)
       stalled_events_ = 0;
-    else if (++stalled_events_ >= k_stall_limit) {
-      request_stop("stalled: " + std::to_string(k_stall_limit) +
-                   " events without a collision at the same time t = " + std::to_string(time()) +
-                   " (a numerical dead-lock in the engine; please report it with the parameters)");
+    else if (++stalled_events_ >= k_stall_events) {
+      request_stop(StopReason::stalled);
       return Outcome::stopped;
     }
     now_ = t;
@@ -592,20 +586,18 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
   predict(i);
   predict(j);
 
-  if (micro_run_ >= k_micro_limit)
-    request_stop("collapse: " + std::to_string(k_micro_limit) +
-                 " consecutive collisions less than 1e-10 mean free times apart at t = " +
-                 std::to_string(time()) + " (inelastic collapse; the TC model, tc > 0, avoids it)");
-  if (collision_limit_ != 0 && collisions_ >= collision_limit_) request_stop("max_collisions");
+  if (micro_run_ >= k_collapse_collisions) request_stop(StopReason::collapse);
+  if (collision_limit_ != 0 && collisions_ >= collision_limit_)
+    request_stop(StopReason::max_collisions);
   if (min_temperature_ > 0 && sum_u2_ * (1.0 / (theta_ * theta_)) < min_temperature_ * n_ * D)
-    request_stop("min_temperature");
+    request_stop(StopReason::min_temperature);
 }
 
 template <int D, class Observer>
-void Engine<D, Observer>::request_stop(std::string reason) {
+void Engine<D, Observer>::request_stop(StopReason reason) {
   if (stop_) return;
   stop_ = true;
-  stop_reason_ = std::move(reason);
+  stop_reason_ = reason;
 }
 
 // ---------------------------------------------------------------------------------------------

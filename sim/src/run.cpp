@@ -29,7 +29,7 @@ RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
   RunResult result;
   result.parameters = p;
   result.version = k_version;
-  result.stop_reason = "t_end";
+  result.stop_reason = StopReason::t_end;
 
   const std::vector<double> samples = sample_times(p);
   std::vector<double> snapshots = p.snapshot_times;

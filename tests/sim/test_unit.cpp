@@ -194,7 +194,7 @@ RunResult small_result() {
   r.parameters.contact_statistics = true;
   r.parameters.snapshot_times = {1.5, 2.0 / 3.0};
   r.version = "test";
-  r.stop_reason = "t_end";
+  r.stop_reason = StopReason::t_end;
   r.collisions = 12;
   r.events = 40;
   for (int k = 0; k < 3; ++k) {

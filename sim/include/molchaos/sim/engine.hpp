@@ -27,6 +27,7 @@
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
+#include "molchaos/sim/stop_reason.hpp"
 
 namespace molchaos::sim {
 
@@ -63,7 +64,9 @@ class Engine {
   std::array<double, D> momentum() const;
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
-  const std::string& stop_reason() const { return stop_reason_; }
+  /// Why the engine stopped (meaningful after Status::stopped), and the CSV text for it.
+  StopReason stop_reason() const { return stop_reason_; }
+  std::string stop_message() const { return describe(stop_reason_, time()); }
   Observer& observer() { return observer_; }
   const Observer& observer() const { return observer_; }
   int cells_per_side() const { return cells_per_side_; }
@@ -88,7 +91,6 @@ class Engine {
   /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
   void resume() {
     stop_ = false;
-    stop_reason_.clear();
   }
   /// Full overlap check every `every` events (0 = never); throws std::logic_error on overlap.
   void set_debug_overlap_check(std::uint64_t every) { debug_check_every_ = every; }
@@ -138,7 +140,7 @@ class Engine {
   void cell_remove(std::int32_t i);
   void grow_cells();
   void position_now(std::int32_t i, double* r) const;
-  void request_stop(std::string reason);
+  void request_stop(StopReason reason);
   double sum_velocity_squared() const;
   void scale_velocities(double factor);  // and recomputes sum_u2_
 
@@ -246,7 +248,7 @@ class Engine {
 
   Observer observer_;
   bool stop_ = false;
-  std::string stop_reason_;
+  StopReason stop_reason_ = StopReason::t_end;
 };
 
 extern template class Engine<2, NoObserver>;
