@@ -13,6 +13,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "molchaos/sim/cell_grid.hpp"
+#include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/run.hpp"
 
 namespace molchaos::sim {
@@ -51,31 +53,6 @@ constexpr double k_neighbour_list_packing = 0.25;
 // slower); the smallest of them keeps the lists shortest.
 constexpr double k_shell = 0.25;
 
-template <int D>
-constexpr int stencil_size() {
-  return D == 2 ? 9 : 27;
-}
-
-template <int D>
-constexpr int slab_size() {
-  return D == 2 ? 3 : 9;
-}
-
-template <int D>
-void cell_coords(int c, int cps, int* x) {
-  for (int a = 0; a < D; ++a) {
-    x[a] = c % cps;
-    c /= cps;
-  }
-}
-
-template <int D>
-int cell_index(const int* x, int cps) {
-  int c = 0;
-  for (int a = D - 1; a >= 0; --a) c = c * cps + x[a];
-  return c;
-}
-
 // std::min(a, b) for doubles without a branch (GCC branches on it; the order is random here).
 [[gnu::always_inline]] inline double earlier_of(double a, double b) {
 #if defined(__SSE2__)
@@ -83,56 +60,6 @@ int cell_index(const int* x, int cps) {
 #else
   return std::min(a, b);
 #endif
-}
-
-inline int wrap(int x, int cps) { return x < 0 ? x + cps : (x >= cps ? x - cps : x); }
-
-// The 3^D cells around c (periodic), c included.
-template <int D>
-void neighbour_cells(const int* x, int cps, int* out) {
-  int k = 0;
-  if constexpr (D == 2) {
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int y[2] = {wrap(x[0] + dx, cps), wrap(x[1] + dy, cps)};
-        out[k++] = cell_index<2>(y, cps);
-      }
-  } else {
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int y[3] = {wrap(x[0] + dx, cps), wrap(x[1] + dy, cps), wrap(x[2] + dz, cps)};
-          out[k++] = cell_index<3>(y, cps);
-        }
-  }
-}
-
-// The 3^(D-1) cells that enter the stencil when a particle moves into cell c along `axis` in
-// direction `dir`: the layer at offset dir along axis.
-template <int D>
-int slab_cells(const int* coords, int cps, int axis, int dir, int* out) {
-  int x[D];
-  for (int a = 0; a < D; ++a) x[a] = coords[a];
-  x[axis] = wrap(x[axis] + dir, cps);
-  int k = 0;
-  if constexpr (D == 2) {
-    const int other = 1 - axis;
-    for (int d = -1; d <= 1; ++d) {
-      int y[2] = {x[0], x[1]};
-      y[other] = wrap(x[other] + d, cps);
-      out[k++] = cell_index<2>(y, cps);
-    }
-  } else {
-    const int o1 = (axis + 1) % 3, o2 = (axis + 2) % 3;
-    for (int d2 = -1; d2 <= 1; ++d2)
-      for (int d1 = -1; d1 <= 1; ++d1) {
-        int y[3] = {x[0], x[1], x[2]};
-        y[o1] = wrap(x[o1] + d1, cps);
-        y[o2] = wrap(x[o2] + d2, cps);
-        out[k++] = cell_index<3>(y, cps);
-      }
-  }
-  return k;
 }
 
 }  // namespace
@@ -210,149 +137,16 @@ Engine<D, Observer>::Engine(const Parameters& p)
   allocate_cells();
 
   Rng rng(p.seed);
-  place_particles(rng);
-  draw_velocities(rng);
+  const std::vector<double> positions = place_particles<D>(n_, box_, rng);
+  const std::vector<double> velocities = maxwell_velocities<D>(n_, rng);
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) {
+      part_[i].r[a] = positions[D * i + a];
+      part_[i].v[a] = velocities[D * i + a];
+    }
+  sum_u2_ = sum_velocity_squared();
   build_cells();
   rebuild_events();
-}
-
-// Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
-// fraction); otherwise a simple lattice with random vacancies and jitter. Relaxation melts either.
-template <int D, class Observer>
-void Engine<D, Observer>::place_particles(Rng& rng) {
-  const double packing = (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) *
-                         static_cast<double>(n_) / std::pow(box_, D);
-  const double rsa_limit = D == 2 ? 0.25 : 0.2;
-  if (packing < rsa_limit) {
-    const int g = static_cast<int>(std::floor(box_));  // >= 3, width >= 1
-    const double w = box_ / g;
-    std::size_t cells = 1;
-    for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(g);
-    std::vector<std::int32_t> head(cells, -1), next(static_cast<std::size_t>(n_), -1);
-    constexpr int k_attempts = 100000;
-    bool ok = true;
-    for (std::int32_t i = 0; i < n_ && ok; ++i) {
-      int attempt = 0;
-      for (; attempt < k_attempts; ++attempt) {
-        double r[D];
-        int x[D];
-        for (int a = 0; a < D; ++a) {
-          r[a] = rng.uniform() * box_;
-          x[a] = std::min(static_cast<int>(r[a] / w), g - 1);
-        }
-        int stencil[stencil_size<D>()];
-        neighbour_cells<D>(x, g, stencil);
-        bool free = true;
-        for (int s = 0; s < stencil_size<D>() && free; ++s)
-          for (std::int32_t j = head[stencil[s]]; j >= 0 && free; j = next[j]) {
-            double d2 = 0;
-            for (int a = 0; a < D; ++a) {
-              double d = r[a] - part_[j].r[a];
-              if (d > half_box_) d -= box_;
-              if (d < -half_box_) d += box_;
-              d2 += d * d;
-            }
-            if (d2 <= 1.0 + 1e-9) free = false;
-          }
-        if (!free) continue;
-        for (int a = 0; a < D; ++a) part_[i].r[a] = r[a];
-        const int c = cell_index<D>(x, g);
-        next[i] = head[c];
-        head[c] = i;
-        break;
-      }
-      if (attempt == k_attempts) ok = false;
-    }
-    if (ok) return;
-  }
-  // Lattice with random vacancies and jitter. d = 2: k sites per row, an even number m of rows,
-  // odd rows shifted by half a spacing (a triangular lattice when the box allows it), the (k, m)
-  // with k m >= N that maximises the nearest-site distance; that reaches n = 1.1 (packing 0.86,
-  // above random close packing) for N = 1000. d = 3: a simple cubic lattice (n < ~1).
-  std::int64_t per_row = 0, rows = 0;  // d = 2
-  double nearest = 0;                  // nearest-site distance of the chosen lattice
-  if constexpr (D == 2) {
-    const auto k_max = static_cast<std::int64_t>(std::floor(box_));
-    for (std::int64_t k = 1; k <= k_max; ++k) {
-      std::int64_t m = (n_ + k - 1) / k;
-      m += m % 2;  // even: the shifted rows must match across the periodic boundary
-      const double a = box_ / static_cast<double>(k), h = box_ / static_cast<double>(m);
-      const double d = std::min({a, std::sqrt(0.25 * a * a + h * h), 2.0 * h});
-      if (d > nearest) {
-        nearest = d;
-        per_row = k;
-        rows = m;
-      }
-    }
-  } else {
-    std::int64_t m = static_cast<std::int64_t>(std::ceil(std::cbrt(static_cast<double>(n_)) - 1e-9));
-    while (m * m * m < n_) ++m;
-    per_row = m;
-    nearest = box_ / static_cast<double>(m);
-  }
-  if (nearest <= 1.0 + 1e-9) {
-    // Lattice distances scale with L ~ n^(-1/d): the densest start this lattice gives for this N.
-    const double density = static_cast<double>(n_) / std::pow(box_, D);
-    const double reachable = density * std::pow(nearest, D) / (1.0 + 1e-6);
-    throw std::runtime_error(
-        "density " + std::to_string(density) +
-        " is too high to generate a non-overlapping initial state for N = " + std::to_string(n_) +
-        (D == 2 ? " disks (a staggered lattice with vacancies reaches n < "
-                : " spheres (a simple cubic lattice with vacancies reaches n < ") +
-        std::to_string(reachable) + " for this N; close packing is " +
-        std::to_string(D == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0)) + ")");
-  }
-  const std::int64_t sites = D == 2 ? per_row * rows : per_row * per_row * per_row;
-  std::vector<std::int64_t> site(static_cast<std::size_t>(sites));
-  for (std::int64_t s = 0; s < sites; ++s) site[static_cast<std::size_t>(s)] = s;
-  // Each coordinate moves by at most jitter/2, so a displacement is at most jitter sqrt(d)/2 and
-  // two sites stay more than 1 apart.
-  const double jitter = 0.99 * (nearest - 1.0) / std::sqrt(static_cast<double>(D));
-  for (std::int32_t i = 0; i < n_; ++i) {
-    const std::size_t pick =
-        static_cast<std::size_t>(i) + static_cast<std::size_t>(rng.below(sites - i));
-    std::swap(site[static_cast<std::size_t>(i)], site[pick]);
-    const std::int64_t s = site[static_cast<std::size_t>(i)];
-    double r[D];
-    if constexpr (D == 2) {
-      const std::int64_t column = s % per_row, row = s / per_row;
-      const double a = box_ / static_cast<double>(per_row), h = box_ / static_cast<double>(rows);
-      r[0] = (static_cast<double>(column) + (row % 2 == 0 ? 0.25 : 0.75)) * a;
-      r[1] = (static_cast<double>(row) + 0.5) * h;
-    } else {
-      std::int64_t rest = s;
-      for (int a = 0; a < D; ++a) {
-        r[a] = (static_cast<double>(rest % per_row) + 0.5) * nearest;
-        rest /= per_row;
-      }
-    }
-    for (int a = 0; a < D; ++a) {
-      double x = r[a] + (rng.uniform() - 0.5) * jitter;
-      if (x < 0) x += box_;
-      if (x >= box_) x -= box_;
-      part_[i].r[a] = x;
-    }
-  }
-}
-
-template <int D, class Observer>
-void Engine<D, Observer>::draw_velocities(Rng& rng) {
-  for (auto& particle : part_)
-    for (double& v : particle.v) v = rng.normal();
-  double mean[D] = {};
-  for (std::int32_t i = 0; i < n_; ++i)
-    for (int a = 0; a < D; ++a) mean[a] += part_[i].v[a];
-  for (int a = 0; a < D; ++a) mean[a] /= n_;
-  double sum = 0;
-  for (std::int32_t i = 0; i < n_; ++i)
-    for (int a = 0; a < D; ++a) {
-      part_[i].v[a] -= mean[a];
-      sum += part_[i].v[a] * part_[i].v[a];
-    }
-  scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
-  theta_ = 1;
-  t_offset_ = 0;
-  now_ = 0;
 }
 
 template <int D, class Observer>

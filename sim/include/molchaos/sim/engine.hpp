@@ -131,8 +131,6 @@ class Engine {
   void resync();
   void rebuild_events();
   void sort_by_cell();
-  void place_particles(Rng& rng);
-  void draw_velocities(Rng& rng);
   void build_cells();
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
