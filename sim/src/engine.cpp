@@ -165,9 +165,7 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
     id_[i] = i;
   }
   sum_u2_ = sum_velocity_squared();
-  theta_ = 1;
-  t_offset_ = 0;
-  now_ = 0;
+  clock_ = InternalClock{};
   std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
   collisions_ = events_ = 0;
   micro_run_ = 0;
@@ -212,9 +210,7 @@ void Engine<D, Observer>::relax(double collisions_per_particle) {
       sum += part_[i].v[a] * part_[i].v[a];
     }
   scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
-  theta_ = 1;
-  t_offset_ = 0;
-  now_ = 0;
+  clock_ = InternalClock{};
   for (auto& particle : part_) particle.t = 0;
   std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
   collisions_ = events_ = 0;
@@ -243,13 +239,13 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
       calendar_.prefetch(g);
     }
     if (events_ >= event_limit) return Outcome::paused;
-    if (t != now_)
+    if (t != clock_.now)
       stalled_events_ = 0;
     else if (++stalled_events_ >= k_stall_events) {
       request_stop(StopReason::stalled);
       return Outcome::stopped;
     }
-    now_ = t;
+    clock_.now = t;
     ++events_;
     if (ev_[i].cross_time < ev_[i].coll_time) {
       if (neighbour_lists_)
@@ -266,7 +262,7 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
       collide(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
       if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
-      if (sum_u2_ < rescale_below || now_ > k_rebase_time) return Outcome::resync;
+      if (sum_u2_ < rescale_below || clock_.now > k_rebase_time) return Outcome::resync;
     }
     if (debug_check_every_ != 0 && events_ % debug_check_every_ == 0) check_overlaps();
   }
@@ -292,10 +288,10 @@ auto Engine<D, Observer>::advance_to(double t, std::uint64_t max_events) -> Stat
   const std::uint64_t limit =
       max_events == std::numeric_limits<std::uint64_t>::max() ? max_events : events_ + max_events;
   for (;;) {
-    const double tau_stop = (t - t_offset_) / theta_;
+    const double tau_stop = clock_.internal_time(t);
     switch (dispatch(tau_stop, limit, model_)) {
       case Outcome::reached:
-        now_ = std::max(now_, tau_stop);
+        clock_.now = std::max(clock_.now, tau_stop);
         return Status::reached;
       case Outcome::resync:
         resync();
@@ -324,10 +320,10 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
   advance_particle(j);
   double* vi = part_[i].v;
   double* vj = part_[j].v;
-  // b = dr.dv with exactly the arithmetic of pair_time() (j is at now_ here, so its position
+  // b = dr.dv with exactly the arithmetic of pair_time() (j is at clock_.now here, so its position
   // term is exact): the approach test below and the prediction that scheduled this event then
   // agree bit for bit. Were gn computed as dv.e instead, rounding could make a pair with a
-  // vanishing normal velocity "approaching" for pair_time() (event at now_) and "separating" here
+  // vanishing normal velocity "approaching" for pair_time() (event at clock_.now) and "separating" here
   // (nothing done), an endless loop at a frozen time, as happened near inelastic collapse.
   double e[D], dist2 = 0, b = 0;
   for (int a = 0; a < D; ++a) {
@@ -348,20 +344,20 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
   const double gn = b * inv_dist;  // (v_i - v_j).e, < 0, same sign as b
 
   // TC model (Luding & McNamara): elastic if either particle collided less than tc ago.
-  const double since = now_ - std::max(last_collision_time_[i], last_collision_time_[j]);
-  const bool elastic = model.tc.apply(since * theta_);
+  const double since = clock_.now - std::max(last_collision_time_[i], last_collision_time_[j]);
+  const bool elastic = model.tc.apply(clock_.physical_interval(since));
   // Inelastic collapse: an unbroken run of collisions ever closer in time.
   micro_run_ = since < micro_interval_ ? micro_run_ + 1 : 0;
 
   const CollisionView<D> contact{
-      i, j, e, vi, vj, gn, sum_u2_ / (static_cast<double>(n_) * D), theta_};
+      i, j, e, vi, vj, gn, sum_u2_ / (static_cast<double>(n_) * D), clock_.theta};
   observer_.before(contact);
   const double energy_lost = model.rule.template apply<D>(vi, vj, e, gn, elastic);
   sum_u2_ -= 2.0 * energy_lost;  // sum u^2 is twice the kinetic energy
   observer_.after(contact, CollisionOutcome{energy_lost, elastic});
   ++part_[i].counter;
   ++part_[j].counter;
-  last_collision_time_[i] = last_collision_time_[j] = now_;
+  last_collision_time_[i] = last_collision_time_[j] = clock_.now;
   ++collisions_;
 
   if constexpr (Shuffle::active) {
@@ -383,7 +379,7 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
   if (micro_run_ >= k_collapse_collisions) request_stop(StopReason::collapse);
   if (collision_limit_ != 0 && collisions_ >= collision_limit_)
     request_stop(StopReason::max_collisions);
-  if (min_temperature_ > 0 && sum_u2_ * (1.0 / (theta_ * theta_)) < min_temperature_ * n_ * D)
+  if (min_temperature_ > 0 && sum_u2_ * (1.0 / (clock_.theta * clock_.theta)) < min_temperature_ * n_ * D)
     request_stop(StopReason::min_temperature);
 }
 
@@ -399,27 +395,27 @@ void Engine<D, Observer>::request_stop(StopReason reason) {
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::advance_particle(std::int32_t i) {
-  const double dt = now_ - part_[i].t;
+  const double dt = clock_.now - part_[i].t;
   if (dt != 0) {
     for (int a = 0; a < D; ++a) part_[i].r[a] += part_[i].v[a] * dt;
-    part_[i].t = now_;
+    part_[i].t = clock_.now;
   }
 }
 
 template <int D, class Observer>
 void Engine<D, Observer>::position_now(std::int32_t i, double* r) const {
-  const double dt = now_ - part_[i].t;
+  const double dt = clock_.now - part_[i].t;
   for (int a = 0; a < D; ++a) r[a] = part_[i].r[a] + part_[i].v[a] * dt;
 }
 
-// Time of contact of i (at now_) and j (at its local time), or +inf: the smaller root of
+// Time of contact of i (at clock_.now) and j (at its local time), or +inf: the smaller root of
 // |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)). The reference
 // arithmetic; with SSE2 the engine uses pair_times() below, which does the same operations.
 template <int D, class Observer>
 [[gnu::always_inline]] inline double Engine<D, Observer>::pair_time(std::int32_t i, std::int32_t j) const {
   const Particle& pi = part_[i];
   const Particle& pj = part_[j];
-  const double dtj = now_ - pj.t;
+  const double dtj = clock_.now - pj.t;
   double b = 0, dr2 = 0, dv2 = 0;
   for (int a = 0; a < D; ++a) {
     double d = pi.r[a] - (pj.r[a] + pj.v[a] * dtj);
@@ -435,7 +431,7 @@ template <int D, class Observer>
   const double disc = b * b - dv2 * c;
   if (disc < 0) return k_inf;
   const double dt = c / (-b + std::sqrt(disc));
-  return dt > 0 ? now_ + dt : now_;  // c < 0: overlapping by rounding and approaching: now
+  return dt > 0 ? clock_.now + dt : clock_.now;  // c < 0: overlapping by rounding and approaching: now
 }
 
 #if defined(__SSE2__)
@@ -454,7 +450,7 @@ template <int D, class Observer>
   const Particle& p1 = part_[j1];
   const Particle& p2 = part_[j2];
   const __m128d zero = _mm_setzero_pd();
-  const __m128d now = _mm_set1_pd(now_);
+  const __m128d now = _mm_set1_pd(clock_.now);
   const __m128d half = _mm_set1_pd(half_box_), minus_half = _mm_set1_pd(-half_box_);
   const __m128d box = _mm_set1_pd(box_);
   const __m128d dtj = _mm_sub_pd(now, _mm_loadh_pd(_mm_load_sd(&p1.t), &p2.t));
@@ -521,7 +517,7 @@ template <int Count>
   return k;
 }
 
-// The earliest collision of i (at now_) with the listed candidates after `best`: updates best and
+// The earliest collision of i (at clock_.now) with the listed candidates after `best`: updates best and
 // partner. Branch-free selection; candidates in list order, the first of equal times wins.
 // list[count] must be writable: an odd list is padded there with i itself (its pair time with
 // itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
@@ -572,7 +568,7 @@ template <int D, class Observer>
     axis += earlier * (a - axis);
     best = earlier_of(best, dt);
   }
-  ev_[i].cross_time = now_ + std::max(best, 0.0);
+  ev_[i].cross_time = clock_.now + std::max(best, 0.0);
   ev_[i].cross_axis = axis;
 }
 
@@ -622,7 +618,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
-// Time at which i (at now_) leaves the sphere of radius shell_ around its list centre.
+// Time at which i (at clock_.now) leaves the sphere of radius shell_ around its list centre.
 template <int D, class Observer>
 void Engine<D, Observer>::shell_exit(std::int32_t i) {
   double b = 0, c = -shell_ * shell_, a = 0;
@@ -638,7 +634,7 @@ void Engine<D, Observer>::shell_exit(std::int32_t i) {
     return;
   }
   const double dt = (-b + std::sqrt(std::max(b * b - a * c, 0.0))) / a;
-  ev_[i].cross_time = now_ + std::max(dt, 0.0);
+  ev_[i].cross_time = clock_.now + std::max(dt, 0.0);
 }
 
 template <int D, class Observer>
@@ -806,19 +802,15 @@ void Engine<D, Observer>::resync() {
     factor = 1.0 / std::sqrt(temperature);
     scale_velocities(factor);
   }
-  // Physical time is unchanged: t = t_offset + theta tau; velocities u -> f u, so theta -> f theta
-  // and the internal clock restarts at 0.
-  t_offset_ += theta_ * now_;
-  theta_ *= factor;
-  for (auto& t : last_collision_time_) t = (t - now_) / factor;
+  for (auto& t : last_collision_time_) t = clock_.restarted(t, factor);
   for (auto& particle : part_) particle.t = 0;
-  now_ = 0;
+  clock_.restart(factor);
   rebuild_events();
 }
 
 // Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
 // reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
-// Only called with every particle at now_ and all predictions about to be redone.
+// Only called with every particle at clock_.now and all predictions about to be redone.
 template <int D, class Observer>
 void Engine<D, Observer>::sort_by_cell() {
   std::vector<std::int32_t> start(cells_ + 1, 0);
@@ -860,12 +852,12 @@ void Engine<D, Observer>::rebuild_events() {
   const std::int64_t buckets = 4 * static_cast<std::int64_t>(n_);  // window ~ 4 mean waits
   double width = calendar_.bucket_width();
   for (int pass = 0; pass < 2; ++pass) {
-    calendar_.reset(n_, now_, width, buckets);
+    calendar_.reset(n_, clock_.now, width, buckets);
     for (std::int32_t i = 0; i < n_; ++i) predict(i);
     double sum = 0;
     std::int32_t finite = 0;
     for (std::int32_t i = 0; i < n_; ++i) {
-      const double wait = calendar_.time(i) - now_;
+      const double wait = calendar_.time(i) - clock_.now;
       if (wait < k_inf) {
         sum += wait;
         ++finite;
@@ -969,26 +961,26 @@ void Engine<D, Observer>::scale_velocities(double factor) {
 
 template <int D, class Observer>
 double Engine<D, Observer>::time() const {
-  return t_offset_ + theta_ * now_;
+  return clock_.time();
 }
 
 template <int D, class Observer>
 double Engine<D, Observer>::temperature() const {
   const double sum = sum_velocity_squared();
-  return sum / (static_cast<double>(n_) * D * theta_ * theta_);
+  return sum / (static_cast<double>(n_) * D * clock_.theta * clock_.theta);
 }
 
 template <int D, class Observer>
 double Engine<D, Observer>::kinetic_energy() const {
   const double sum = sum_velocity_squared();
-  return 0.5 * sum / (theta_ * theta_);
+  return 0.5 * sum / (clock_.theta * clock_.theta);
 }
 
 template <int D, class Observer>
 std::array<double, D> Engine<D, Observer>::momentum() const {
   std::array<double, D> p{};
   for (std::int32_t i = 0; i < n_; ++i)
-    for (int a = 0; a < D; ++a) p[a] += part_[i].v[a] / theta_;
+    for (int a = 0; a < D; ++a) p[a] += clock_.physical_velocity(part_[i].v[a]);
   return p;
 }
 
@@ -1037,7 +1029,7 @@ Sample Engine<D, Observer>::sample() const {
   }
   const double n = static_cast<double>(n_);
   const double t_internal = m2 / (n * D);
-  s.temperature = t_internal / (theta_ * theta_);
+  s.temperature = t_internal / (clock_.theta * clock_.theta);
   s.a2 = m2 > 0 ? static_cast<double>(D) / (D + 2) * (m4 / n) / ((m2 / n) * (m2 / n)) - 1.0 : 0.0;
   s.collisions = collisions_;
   s.events = events_;
@@ -1083,7 +1075,7 @@ Snapshot Engine<D, Observer>::snapshot() const {
       if (x < 0) x += box_;
       if (x >= box_) x -= box_;
       snap.positions[D * id_[i] + a] = x;
-      snap.velocities[D * id_[i] + a] = part_[i].v[a] / theta_;
+      snap.velocities[D * id_[i] + a] = clock_.physical_velocity(part_[i].v[a]);
     }
   }
   return snap;

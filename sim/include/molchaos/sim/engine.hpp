@@ -24,6 +24,7 @@
 #include "molchaos/sim/collision_model.hpp"
 #include "molchaos/sim/collision_observers.hpp"
 #include "molchaos/sim/event_calendar.hpp"
+#include "molchaos/sim/internal_clock.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
@@ -226,8 +227,8 @@ class Engine {
   EventCalendar calendar_;
   bool prefetch_ = true;  // software prefetches pay only when the data outgrow the cache
 
-  // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.
-  double now_ = 0, t_offset_ = 0, theta_ = 1;
+  // Time and units: physical t = t_offset + theta * tau, physical v = u / theta.
+  InternalClock clock_;
   double sum_u2_ = 0;  // sum of internal u^2, updated per collision, recomputed at resync
   std::uint64_t collisions_ = 0, events_ = 0;
 
