@@ -599,7 +599,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   double best = k_inf;
   std::int32_t partner = -1;
   if (neighbour_lists_) {
-    earliest(i, neighbour_slots(i), nl_count_[i], best, partner);
+    earliest(i, lists_.slots(i), lists_.count(i), best, partner);
   } else {
     int stencil[stencil_size<D>()];
     stencil_of(i, stencil);
@@ -637,34 +637,6 @@ void Engine<D, Observer>::shell_exit(std::int32_t i) {
   ev_[i].cross_time = clock_.now + std::max(dt, 0.0);
 }
 
-template <int D, class Observer>
-void Engine<D, Observer>::add_neighbour(std::int32_t i, std::int32_t j) {
-  if (nl_count_[i] + 1 >= nl_capacity_) grow_neighbour_lists();  // a spare slot for earliest()
-  neighbour_slots(i)[nl_count_[i]++] = j;
-}
-
-template <int D, class Observer>
-void Engine<D, Observer>::remove_neighbour(std::int32_t i, std::int32_t j) {
-  std::int32_t* list = neighbour_slots(i);
-  for (std::int32_t k = 0; k < nl_count_[i]; ++k)
-    if (list[k] == j) {
-      list[k] = list[--nl_count_[i]];
-      return;
-    }
-}
-
-template <int D, class Observer>
-void Engine<D, Observer>::grow_neighbour_lists() {
-  const int old = nl_capacity_;
-  nl_capacity_ = std::max(8, 2 * old);
-  std::vector<std::int32_t> grown(static_cast<std::size_t>(n_) * nl_capacity_, -1);
-  for (std::int32_t i = 0; i < n_; ++i)
-    for (std::int32_t k = 0; k < nl_count_[i]; ++k)
-      grown[static_cast<std::size_t>(i) * nl_capacity_ + k] =
-          nl_[static_cast<std::size_t>(i) * old + k];
-  nl_.swap(grown);
-}
-
 // Adds every particle of the neighbouring cells whose centre lies within the list cutoff of i's
 // centre to i's list, and i to theirs (only j > i when `only_higher`, for the initial build).
 template <int D, class Observer>
@@ -692,10 +664,10 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
     cand[found] = j;
     found += static_cast<int>((d2 < cutoff2) & (j != i) & (!only_higher | (j > i)));
   }
-  for (std::int32_t k = 0; k < found; ++k) prefetch_neighbour_list(cand[k]);
+  for (std::int32_t k = 0; k < found; ++k) lists_.prefetch(cand[k]);
   for (std::int32_t k = 0; k < found; ++k) {
-    add_neighbour(i, cand[k]);
-    add_neighbour(cand[k], i);
+    lists_.add(i, cand[k]);
+    lists_.add(cand[k], i);
   }
 }
 
@@ -708,11 +680,11 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
     if (x >= box_) x -= box_;
     center_[D * i + a] = x;
   }
-  const auto old = neighbours(i);
+  const auto old = lists_.neighbours(i);
   // Their lists, where i is struck out.
-  for (const std::int32_t k : old) prefetch_neighbour_list(k);
-  for (const std::int32_t k : old) remove_neighbour(k, i);
-  nl_count_[i] = 0;
+  for (const std::int32_t k : old) lists_.prefetch(k);
+  for (const std::int32_t k : old) lists_.remove(k, i);
+  lists_.clear(i);
   cell_remove(i);
   cell_insert(i, cell_of_position(part_[i].r));
   collect_neighbours(i, false);
@@ -722,14 +694,14 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
 template <int D, class Observer>
 void Engine<D, Observer>::build_neighbour_lists() {
   center_.resize(static_cast<std::size_t>(n_) * D);
-  nl_count_.assign(static_cast<std::size_t>(n_), 0);
-  if (nl_capacity_ == 0) {
+  int capacity = 0;  // 0: keep the capacity the lists grew to
+  if (lists_.capacity() == 0) {
     const double cutoff = 1.0 + 2.0 * shell_;
     const double expected = 4.0 / 3.0 * std::numbers::pi * cutoff * cutoff * cutoff *
                             static_cast<double>(n_) / std::pow(box_, 3);
-    nl_capacity_ = static_cast<int>(std::ceil(2 * expected + 8));
+    capacity = static_cast<int>(std::ceil(2 * expected + 8));
   }
-  nl_.assign(static_cast<std::size_t>(n_) * nl_capacity_, -1);
+  lists_.reset(n_, capacity);
   for (std::int32_t i = 0; i < n_; ++i)
     for (int a = 0; a < D; ++a) center_[D * i + a] = part_[i].r[a];
   for (std::int32_t i = 0; i < n_; ++i) collect_neighbours(i, true);
@@ -1085,8 +1057,8 @@ template <int D, class Observer>
 std::size_t Engine<D, Observer>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
-         bytes(slot_) + bytes(slots_) + bytes(center_) + bytes(nl_) +
-         bytes(nl_count_) + calendar_.memory_bytes();
+         bytes(slot_) + bytes(slots_) + bytes(center_) + lists_.memory_bytes() +
+         calendar_.memory_bytes();
 }
 
 // The engines in use (add one line per dimension for a new collision observer).

@@ -25,6 +25,7 @@
 #include "molchaos/sim/collision_observers.hpp"
 #include "molchaos/sim/event_calendar.hpp"
 #include "molchaos/sim/internal_clock.hpp"
+#include "molchaos/sim/neighbour_lists.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
@@ -125,9 +126,6 @@ class Engine {
   void rebuild_neighbours(std::int32_t i);
   void build_neighbour_lists();
   void collect_neighbours(std::int32_t i, bool only_higher);
-  void add_neighbour(std::int32_t i, std::int32_t j);
-  void remove_neighbour(std::int32_t i, std::int32_t j);
-  void grow_neighbour_lists();
   void advance_particle(std::int32_t i);
   void resync();
   void rebuild_events();
@@ -201,27 +199,11 @@ class Engine {
   void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
   std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
-  // Neighbour lists (dense spheres only): shell centres, lists of nl_capacity_ slots each.
+  // Neighbour lists (dense spheres only): shell centres and the lists.
   bool neighbour_lists_ = false;
   double shell_ = 0;
   std::vector<double> center_;
-  std::vector<std::int32_t> nl_, nl_count_;
-  int nl_capacity_ = 0;
-  // i's nl_capacity_ slots: its nl_count_[i] neighbours, then room (always one spare slot).
-  std::int32_t* neighbour_slots(std::int32_t i) {
-    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
-  }
-  const std::int32_t* neighbour_slots(std::int32_t i) const {
-    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
-  }
-  std::span<const std::int32_t> neighbours(std::int32_t i) const {
-    return {neighbour_slots(i), static_cast<std::size_t>(nl_count_[i])};
-  }
-  void prefetch_neighbour_list(std::int32_t i) const {
-    __builtin_prefetch(&nl_count_[i]);
-    __builtin_prefetch(neighbour_slots(i));
-    __builtin_prefetch(neighbour_slots(i) + 16);
-  }
+  NeighbourLists lists_;
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
