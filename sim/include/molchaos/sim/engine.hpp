@@ -29,6 +29,7 @@
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
+#include "molchaos/sim/sample_observers.hpp"
 #include "molchaos/sim/stop_reason.hpp"
 
 namespace molchaos::sim {
@@ -80,9 +81,17 @@ class Engine {
   /// Throws std::logic_error if a pair is closer than 1 - 1e-10.
   void check_overlaps() const;
 
-  /// Observables at the current time.
-  Sample sample() const;  // without contacts (the ContactStatistics observer has them)
-  Snapshot snapshot() const;
+  /// Observables at the current time (sample_observers.hpp).
+  Sample sample() const { return temperature_sample(*this); }  // contacts: ContactStatistics
+  Snapshot snapshot() const { return snapshot_of(*this); }
+
+  /// Read access for observers at sample times, particles in engine order (renumbered by cell):
+  /// position now, internal velocity u (physical v = u / clock().theta), original index.
+  void position_now(std::int32_t i, double* r) const;
+  const double* internal_velocity(std::int32_t i) const { return part_[i].v; }
+  std::int32_t original_index(std::int32_t i) const { return id_[i]; }
+  const InternalClock& clock() const { return clock_; }
+  static constexpr int dimension = D;
 
   const CollisionModel& collision_model() const { return model_; }
 
@@ -136,7 +145,6 @@ class Engine {
   void file_in_cell(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
   void grow_cells();
-  void position_now(std::int32_t i, double* r) const;
   void request_stop(StopReason reason);
   double sum_velocity_squared() const;
   void scale_velocities(double factor);  // and recomputes sum_u2_
