@@ -20,7 +20,11 @@ std::vector<double> place_particles(std::int32_t n, double box, Rng& rng) {
                          static_cast<double>(n) / std::pow(box, D);
   const double rsa_limit = D == 2 ? 0.25 : 0.2;
   if (packing < rsa_limit) {
-    const int g = static_cast<int>(std::floor(box));  // >= 3, width >= 1
+    // Cells of width >= 1, at most about 2 n of them: the grid must not scale with the box volume
+    // (a dilute gas would need gigabytes). The cells only speed up the overlap test: any grid of
+    // width >= 1 finds the same overlaps, so the positions do not depend on it.
+    const double most_per_side = std::max(3.0, std::ceil(std::pow(2.0 * n, 1.0 / D)));
+    const int g = static_cast<int>(std::floor(std::min(box, most_per_side)));  // >= 3
     const double w = box / g;
     std::size_t cells = 1;
     for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(g);
