@@ -242,3 +242,35 @@ BOOST_AUTO_TEST_CASE(gas_cooled_to_1e_minus_12_keeps_relative_precision) {
   BOOST_TEST(omega / omega_enskog == 1.0, tt::tolerance(0.03));
   BOOST_TEST(elastic.min_pair_distance() >= k_min_distance);
 }
+
+// A very dilute gas (N = 200 at n = 1e-12, box side 1.4e7): the engine's memory must scale with N,
+// not with the box volume (the insertion grid alone once needed 2e14 cells). Bound: 4 kB per
+// particle, some twenty times the engine's records, a thousandth of one cell per unit volume.
+BOOST_AUTO_TEST_CASE(very_dilute_gas_runs_in_memory_proportional_to_n) {
+  for (const int dimension : {2, 3}) {
+    Parameters p;
+    p.dimension = dimension;
+    p.particles = 200;
+    p.density = 1e-12;
+    p.relax_collisions_per_particle = 0;
+    std::size_t bytes = 0;
+    double energy = 0, energy_after = 0;
+    if (dimension == 2) {
+      Engine<2> engine(p);
+      energy = engine.kinetic_energy();
+      BOOST_TEST((engine.advance_to(1e7) == Engine<2>::Status::reached));
+      bytes = engine.memory_bytes();
+      energy_after = engine.kinetic_energy();
+    } else {
+      Engine<3> engine(p);
+      energy = engine.kinetic_energy();
+      BOOST_TEST((engine.advance_to(1e5) == Engine<3>::Status::reached));
+      bytes = engine.memory_bytes();
+      energy_after = engine.kinetic_energy();
+    }
+    BOOST_TEST_MESSAGE("d = " << dimension << ", n = 1e-12, N = 200: engine holds " << bytes
+                              << " bytes");
+    BOOST_TEST(bytes < 200u * 4096u);
+    BOOST_TEST(energy_after == energy, tt::tolerance(1e-12));
+  }
+}
