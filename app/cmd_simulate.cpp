@@ -86,9 +86,10 @@ void run_simulate(const SimulateOptions& options) {
 #endif
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
-               result.stop_reason.c_str(), options.out.c_str());
-  if (result.stop_reason.rfind("collapse", 0) == 0)
-    throw std::runtime_error("run stopped early: " + result.stop_reason + " (partial results in " +
+               sim::stop_message(result).c_str(), options.out.c_str());
+  if (result.stop_reason == sim::StopReason::collapse)
+    throw std::runtime_error("run stopped early: " + sim::stop_message(result) +
+                             " (partial results in " +
                              options.out + ")");
 }
 

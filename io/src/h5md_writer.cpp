@@ -122,7 +122,7 @@ void parameters_group(hid_t file, const sim::RunResult& r) {
   numeric_attribute(g.id, "max_collisions", H5T_STD_U64LE,
                     std::vector<std::uint64_t>{p.max_collisions}, true);
   real("min_temperature", p.min_temperature);
-  string_attribute(g.id, "stop_reason", r.stop_reason);
+  string_attribute(g.id, "stop_reason", sim::stop_message(r));
   string_attribute(g.id, "version", r.version);
 }
 

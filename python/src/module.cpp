@@ -198,7 +198,7 @@ py::dict simulate(const py::kwargs& kwargs) {
   d["snapshots"] = snapshots;
   d["parameters"] = parameters_dict(r.parameters);
   d["version"] = r.version;
-  d["stop_reason"] = r.stop_reason;
+  d["stop_reason"] = sim::stop_message(r);
   d["total_collisions"] = r.collisions;
   d["total_events"] = r.events;
   d["wall_seconds"] = r.wall_seconds;

@@ -83,7 +83,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
       << "# snapshot_times = " << snapshots << "\n"
       << "# max_collisions = " << p.max_collisions << "\n"
       << "# min_temperature = " << num(p.min_temperature) << "\n"
-      << "# stop_reason = " << r.stop_reason << "\n"
+      << "# stop_reason = " << stop_message(r) << "\n"
       << "# collisions = " << r.collisions << "\n"
       << "# events = " << r.events << "\n"
       << "# rows = " << r.samples.size() << "\n"
@@ -169,7 +169,9 @@ RunResult read_csv(std::istream& in) {
   p.max_collisions = parse_uint(field("max_collisions"), "max_collisions");
   p.min_temperature = parse_double(field("min_temperature"), "min_temperature");
   r.version = field("version");
-  r.stop_reason = field("stop_reason");
+  const auto stop = parse_stop_reason(field("stop_reason"));
+  if (!stop) corrupt("stop_reason '" + field("stop_reason") + "'");
+  r.stop_reason = *stop;
   r.collisions = parse_uint(field("collisions"), "collisions");
   r.events = parse_uint(field("events"), "events");
   const std::uint64_t rows = parse_uint(field("rows"), "rows");

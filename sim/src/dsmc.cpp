@@ -44,7 +44,7 @@ DsmcGas<D>::DsmcGas(const Parameters& p, double contact_value_g2)
     throw std::invalid_argument("contact_value_g2: value " + std::to_string(contact_value_g2) +
                                 " is outside the allowed range (0, inf)");
   n_ = static_cast<std::uint32_t>(p.particles);
-  restitution_ = p.restitution;
+  rule_ = ConstantRestitution{p.restitution};
   contacts_on_ = p.contact_statistics;
   collision_limit_ = p.max_collisions;
   const double n = static_cast<double>(n_);
@@ -161,7 +161,7 @@ inline typename DsmcGas<D>::Pair DsmcGas<D>::draw_pair(Rng& rng) {
 // that they stay in registers; the clock is flushed at every exit.
 template <int D>
 typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
-  if (!stop_reason_.empty()) return Status::stopped;
+  if (stop_reason_) return Status::stopped;
   target_ = t;
   if (clock_ >= t) return Status::reached;
   set_threshold();
@@ -203,12 +203,12 @@ typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
       clock_ -= std::log(survival) / rate_;  // the clock at this collision
       survival = 1.0;
       if (sum_u2_ < min_sum_u2_) {
-        stop_reason_ = "min_temperature";
+        stop_reason_ = StopReason::min_temperature;
         status = Status::stopped;
         break;
       }
       if (collisions_ == collision_limit_) {
-        stop_reason_ = "max_collisions";
+        stop_reason_ = StopReason::max_collisions;
         status = Status::stopped;
         break;
       }
@@ -250,7 +250,9 @@ bool DsmcGas<D>::collide(std::uint32_t i, std::uint32_t j, const double* g, doub
     contacts_.sum_abs_gn += std::fabs(gne);
     contacts_.sum_g2 += g2 * scale * scale;
   }
-  CollisionRule::apply<D>(ui, uj, e, restitution_);
+  double normal_velocity = 0;
+  for (int a = 0; a < D; ++a) normal_velocity += g[a] * e[a];
+  rule_.apply<D>(ui, uj, e, normal_velocity, /*elastic=*/false);
   double after_i = 0, after_j = 0;
   for (int a = 0; a < D; ++a) {
     after_i += ui[a] * ui[a];
@@ -314,10 +316,10 @@ RunResult run_dsmc_d(const Parameters& p, const ProgressCallback& progress) {
   RunResult result;
   result.parameters = p;
   result.version = k_version;
-  result.stop_reason = "t_end";
+  result.stop_reason = StopReason::t_end;
   for (double t : sample_times(p)) {
     if (gas.advance_to(t) == DsmcGas<D>::Status::stopped) {
-      result.stop_reason = gas.stop_reason();
+      result.stop_reason = *gas.stop_reason();
       result.samples.push_back(gas.sample());  // the state where the run stopped
       break;
     }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/version.hpp"
@@ -14,19 +15,21 @@ namespace {
 
 constexpr std::uint64_t k_progress_events = 1u << 20;
 
-template <int D>
+// Observer: ContactStatistics when the run records them, else NoObserver (nothing per collision).
+template <int D, class Observer>
 RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  Engine<D> engine(p);
+  using RunEngine = Engine<D, Observer>;
+  RunEngine engine(p);
   engine.relax(p.relax_collisions_per_particle);
 
   RunResult result;
   result.parameters = p;
   result.version = k_version;
-  result.stop_reason = "t_end";
+  result.stop_reason = StopReason::t_end;
 
   const std::vector<double> samples = sample_times(p);
   std::vector<double> snapshots = p.snapshot_times;
@@ -39,18 +42,24 @@ RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
   std::size_t next_sample = 0, next_snapshot = 0;
   for (double t : targets) {
     auto status = engine.advance_to(t, k_progress_events);
-    while (status == Engine<D>::Status::paused) {
+    while (status == RunEngine::Status::paused) {
       if (progress)
         progress({engine.time() / p.t_end, engine.collisions(), engine.events(), elapsed()});
       status = engine.advance_to(t, k_progress_events);
     }
-    if (status == Engine<D>::Status::stopped) {
+    auto take_sample = [&engine] {
+      Sample s = engine.sample();
+      if constexpr (std::is_same_v<Observer, ContactStatistics>)
+        s.contacts = engine.observer().take();
+      return s;
+    };
+    if (status == RunEngine::Status::stopped) {
       result.stop_reason = engine.stop_reason();
-      result.samples.push_back(engine.sample());  // the state where the run stopped
+      result.samples.push_back(take_sample());  // the state where the run stopped
       break;
     }
     if (next_sample < samples.size() && samples[next_sample] == t) {
-      Sample s = engine.sample();
+      Sample s = take_sample();
       s.t = t;
       result.samples.push_back(s);
       ++next_sample;
@@ -100,7 +109,10 @@ double enskog_collision_frequency(int dimension, double density, double temperat
 
 RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress) {
   validate(p);
-  return p.dimension == 2 ? run_d<2>(p, progress) : run_d<3>(p, progress);
+  if (p.contact_statistics)
+    return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress)
+                            : run_d<3, ContactStatistics>(p, progress);
+  return p.dimension == 2 ? run_d<2, NoObserver>(p, progress) : run_d<3, NoObserver>(p, progress);
 }
 
 RunResult run(const Parameters& p, const ProgressCallback& progress) {

@@ -77,7 +77,7 @@ BOOST_AUTO_TEST_CASE(a_run_writes_a_readable_csv) {
   BOOST_TEST(o.status == 0);
   const auto r = molchaos::sim::read_csv_file(path);
   BOOST_TEST(r.parameters.particles == 500);
-  BOOST_TEST(r.stop_reason == "t_end");
+  BOOST_TEST((r.stop_reason == molchaos::sim::StopReason::t_end));
   BOOST_TEST(r.samples.back().t == 20.0);
   BOOST_TEST(r.samples.back().temperature < 1.0);
   std::filesystem::remove(path);
@@ -93,6 +93,6 @@ BOOST_AUTO_TEST_CASE(collapse_exits_nonzero_with_the_reason) {
   BOOST_TEST(o.status != 2);
   BOOST_TEST(o.err.find("collapse") != std::string::npos);
   const auto r = molchaos::sim::read_csv_file(path);  // partial results are still written
-  BOOST_TEST(r.stop_reason.rfind("collapse", 0) == 0);
+  BOOST_TEST((r.stop_reason == molchaos::sim::StopReason::collapse));
   std::filesystem::remove(path);
 }

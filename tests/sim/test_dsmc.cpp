@@ -390,7 +390,7 @@ BOOST_AUTO_TEST_CASE(same_seed_same_bytes_and_the_md_sample_grid) {
   }
   BOOST_TEST(identical);
   BOOST_TEST(a.samples.front().temperature == 1.0, boost::test_tools::tolerance(1e-14));
-  BOOST_TEST(a.stop_reason == "t_end");
+  BOOST_TEST((a.stop_reason == StopReason::t_end));
   BOOST_TEST(a.collisions > 0u);
   p.seed = 43;
   BOOST_TEST(run_dsmc(p).collisions != a.collisions);
@@ -401,12 +401,12 @@ BOOST_AUTO_TEST_CASE(stops_and_bad_input) {
   p.t_end = 1e6;
   p.max_collisions = 12345;
   RunResult r = run_dsmc(p);
-  BOOST_TEST(r.stop_reason == "max_collisions");
+  BOOST_TEST((r.stop_reason == StopReason::max_collisions));
   BOOST_TEST(r.collisions == 12345u);
   p.max_collisions = 0;
   p.min_temperature = 0.3;
   r = run_dsmc(p);
-  BOOST_TEST(r.stop_reason == "min_temperature");
+  BOOST_TEST((r.stop_reason == StopReason::min_temperature));
   BOOST_TEST(r.samples.back().temperature < 0.3);
   BOOST_TEST(r.samples.back().temperature > 0.29);
   auto message_of = [](const Parameters& bad) -> std::string {
@@ -460,7 +460,7 @@ BOOST_AUTO_TEST_CASE(paper_point_precision, *boost::unit_test::disabled()) {
       collisions += result.collisions;
       const auto analysis = molchaos::validation::analyse_run(result, {});
       BOOST_TEST_REQUIRE(analysis.ok, analysis.message);
-      BOOST_TEST_REQUIRE(result.stop_reason == "t_end");
+      BOOST_TEST_REQUIRE((result.stop_reason == StopReason::t_end));
       a_values.push_back(analysis.A);
       a2_values.push_back(analysis.a2);
       dyad_values.push_back(analysis.mean_dyad);

@@ -31,8 +31,10 @@ BOOST_AUTO_TEST_CASE(collision_rule_energy_loss_and_momentum) {
     energy0 += 0.5 * (vi[a] * vi[a] + vj[a] * vj[a]);
     p0[a] = vi[a] + vj[a];
   }
-  const double gn = CollisionRule::apply<3>(vi, vj, e, eps);
+  double gn = 0;
+  for (int a = 0; a < 3; ++a) gn += (vi[a] - vj[a]) * e[a];
   BOOST_TEST(gn < 0);
+  const double reported = ConstantRestitution{eps}.apply<3>(vi, vj, e, gn, false);
   double energy1 = 0, gn_after = 0;
   for (int a = 0; a < 3; ++a) {
     energy1 += 0.5 * (vi[a] * vi[a] + vj[a] * vj[a]);
@@ -42,6 +44,22 @@ BOOST_AUTO_TEST_CASE(collision_rule_energy_loss_and_momentum) {
   BOOST_TEST(energy0 - energy1 == (1 - eps * eps) / 4 * gn * gn,
              boost::test_tools::tolerance(1e-14));
   BOOST_TEST(gn_after == -eps * gn, boost::test_tools::tolerance(1e-14));
+  // The rule reports the energy it removed: the same, to the rounding of the energies.
+  BOOST_TEST(reported == energy0 - energy1, boost::test_tools::tolerance(1e-14));
+  // Made elastic (TC model): no loss, the normal velocity reversed.
+  double wi[3] = {0.3, -1.1, 0.4}, wj[3] = {-0.8, 0.5, 0.2};
+  BOOST_TEST(ConstantRestitution{eps}.apply<3>(wi, wj, e, gn, true) == 0.0);
+  double reversed = 0;
+  for (int a = 0; a < 3; ++a) reversed += (wi[a] - wj[a]) * e[a];
+  BOOST_TEST(reversed == -gn, boost::test_tools::tolerance(1e-14));
+}
+
+BOOST_AUTO_TEST_CASE(tc_model_is_elastic_only_within_its_duration) {
+  BOOST_TEST(!TcModel{}.apply(0.0));  // off
+  BOOST_TEST(!TcModel{0.0}.apply(1e-300));
+  BOOST_TEST(TcModel{1e-4}.apply(0.99e-4));
+  BOOST_TEST(!TcModel{1e-4}.apply(1e-4));
+  BOOST_TEST(!TcModel{1e-4}.apply(std::numeric_limits<double>::infinity()));  // never collided
 }
 
 BOOST_AUTO_TEST_CASE(exchange_makes_the_pair_separate_and_permutes_velocities) {
@@ -176,7 +194,7 @@ RunResult small_result() {
   r.parameters.contact_statistics = true;
   r.parameters.snapshot_times = {1.5, 2.0 / 3.0};
   r.version = "test";
-  r.stop_reason = "t_end";
+  r.stop_reason = StopReason::t_end;
   r.collisions = 12;
   r.events = 40;
   for (int k = 0; k < 3; ++k) {

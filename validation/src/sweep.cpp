@@ -80,8 +80,8 @@ bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult
 
 sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& o) {
   sim::RunResult r = sim::run(p);
-  if (r.stop_reason.rfind("collapse", 0) == 0)
-    throw std::runtime_error("run stopped: " + r.stop_reason);
+  if (r.stop_reason == sim::StopReason::collapse)
+    throw std::runtime_error("run stopped: " + sim::stop_message(r));
   if (!o.cache_directory.empty()) {
     std::filesystem::create_directories(o.cache_directory);
     sim::write_csv_file(r, cache_path(p, o));

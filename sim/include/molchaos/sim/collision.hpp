@@ -1,5 +1,6 @@
-// The two variation points of a collision, as tiny value types: the collision rule (constant
-// restitution, paper eq. (coll) inverted) and the velocity shuffles that follow it (paper Sec. 4).
+// The variation points of a collision, as tiny evaluators (a value with its parameters and one
+// `apply`): the collision rule (constant restitution, paper eq. (coll) inverted), the TC model
+// that makes it elastic for recent colliders, and the velocity shuffles that follow it (Sec. 4).
 #pragma once
 
 #include <cmath>
@@ -13,12 +14,16 @@ namespace molchaos::sim {
 /// Constant coefficient of restitution. With e the unit vector from j to i at contact and
 /// g = v_i - v_j (g.e < 0 approaching): v_i' = v_i - (1+eps)/2 (g.e) e, v_j' = v_j + (1+eps)/2
 /// (g.e) e. Energy lost (m = 1): (1 - eps^2)/4 (g.e)^2.
-struct CollisionRule {
+struct ConstantRestitution {
   double restitution = 1.0;
 
-  /// Applies the rule with restitution eps (the TC model passes 1); returns (g.e) before.
+  /// Applies the rule to the approaching pair with normal velocity `normal_velocity` = g.e (as the
+  /// engine computed it for its approach test); eps = 1 when `elastic` (the TC model), else
+  /// `restitution`. Returns the kinetic energy lost, (1 - eps^2)/4 (g.e)^2.
   template <int D>
-  static double apply(double* vi, double* vj, const double* e, double eps) {
+  double apply(double* vi, double* vj, const double* e, double normal_velocity,
+               bool elastic) const {
+    const double eps = elastic ? 1.0 : restitution;
     double gn = 0, ee = 0;
     for (int a = 0; a < D; ++a) {
       gn += (vi[a] - vj[a]) * e[a];
@@ -32,14 +37,44 @@ struct CollisionRule {
       vi[a] -= kick * e[a];
       vj[a] += kick * e[a];
     }
-    return gn;
+    return 0.25 * (1.0 - eps * eps) * normal_velocity * normal_velocity;
   }
 };
+
+/// The TC model (Luding & McNamara, Granular Matter 1, 113 (1998)): a collision is elastic when
+/// one of the pair collided less than `duration` ago (physical time), which keeps the collision
+/// rate finite where an inelastic gas would collapse. duration = 0: off.
+struct TcModel {
+  double duration = 0.0;
+
+  bool apply(double time_since_last_collision) const {
+    return duration > 0 && time_since_last_collision < duration;
+  }
+};
+
+template <int D>
+void exchange_velocities(double* vi, double* vj, double* vk, double* vl, const double* e);
 
 /// No shuffle: the plain inelastic gas.
 struct NoShuffle {
   static constexpr bool active = false;
 };
+
+/// A shuffle's one `apply`: picks the donor pair (k, l), lets the caller bring k and l to the
+/// present (`prepare(k, l)`: their positions move with their old velocities), then exchanges the
+/// velocities (exchange_velocities). velocity(m) is a pointer to particle m's D components;
+/// `temperature` is in the units of those velocities. Returns (k, l).
+template <int D, class Shuffle, class Velocity, class Prepare>
+std::pair<std::int32_t, std::int32_t> apply_shuffle(const Shuffle& shuffle,
+                                                    const Velocity& velocity, std::int32_t n,
+                                                    std::int32_t i, std::int32_t j, const double* e,
+                                                    double temperature, Rng& rng,
+                                                    const Prepare& prepare) {
+  const auto [k, l] = shuffle.template pick<D>(velocity, n, i, j, e, temperature, rng);
+  prepare(k, l);
+  exchange_velocities<D>(velocity(i), velocity(j), velocity(k), velocity(l), e);
+  return {k, l};
+}
 
 /// The paper's shuffle: two distinct random particles k, l not in {i, j}, drawn uniformly.
 struct PaperShuffle {

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
@@ -55,7 +57,7 @@ class DsmcGas {
 
   [[nodiscard]] double time() const { return clock_; }
   [[nodiscard]] std::uint64_t collisions() const { return collisions_; }
-  [[nodiscard]] const std::string& stop_reason() const { return stop_reason_; }
+  [[nodiscard]] std::optional<StopReason> stop_reason() const { return stop_reason_; }
   [[nodiscard]] double temperature() const;
   /// Physical velocities, d per particle (for tests).
   [[nodiscard]] std::vector<double> velocities() const;
@@ -84,7 +86,7 @@ class DsmcGas {
   static constexpr unsigned k_lookahead = 16;
 
   std::uint32_t n_ = 0;
-  double restitution_ = 1.0;
+  ConstantRestitution rule_;  // the MD's collision rule
   double rate_per_bound_ = 0.0;  // Λ / (2B/s): n g2 β_d N / 2
   bool contacts_on_ = false;
   std::uint64_t collision_limit_ = 0;
@@ -106,7 +108,7 @@ class DsmcGas {
   std::uint64_t collisions_ = 0;
   std::uint64_t candidates_ = 0;
   std::uint64_t next_bookkeeping_ = 0;
-  std::string stop_reason_;
+  std::optional<StopReason> stop_reason_;  // set when a stop condition fired
   ContactMoments contacts_;
 };
 

@@ -21,31 +21,31 @@
 #endif
 
 #include "molchaos/sim/collision.hpp"
+#include "molchaos/sim/collision_model.hpp"
+#include "molchaos/sim/collision_observers.hpp"
 #include "molchaos/sim/event_calendar.hpp"
+#include "molchaos/sim/internal_clock.hpp"
+#include "molchaos/sim/neighbour_lists.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
 #include "molchaos/sim/rng.hpp"
+#include "molchaos/sim/sample_observers.hpp"
+#include "molchaos/sim/stop_reason.hpp"
 
 namespace molchaos::sim {
 
-/// The last collision, for tests of the collision rule (physical units).
-struct CollisionRecord {
-  std::int32_t i = -1, j = -1;
-  double normal_velocity = 0;                  // (v_i - v_j).e before the collision
-  double restitution_used = 1;                 // 1 when the TC model made it elastic
-  double energy_before = 0, energy_after = 0;  // of the pair i, j (before any shuffle)
-};
-
-template <int D>
+/// Observer: the per-collision observer (collision_observers.hpp), NoObserver by default.
+template <int D, class Observer = NoObserver>
 class Engine {
  public:
   /// Builds the initial state: random non-overlapping positions, Maxwell velocities with zero
   /// momentum and T = 1 exactly. Throws std::runtime_error when the density is too high to place
-  /// the particles. Does not relax (call relax()).
+  /// the particles. Does not relax (call relax()). The collision model of the run (rule, TC,
+  /// shuffle) is CollisionModel::from(p), fixed for the engine's life.
   explicit Engine(const Parameters& p);
 
-  /// Elastic dynamics (no shuffle) for the given collisions per particle, then T rescaled to 1,
-  /// time and counters reset to 0.
+  /// A run with CollisionModel::elastic() for the given collisions per particle, then T rescaled
+  /// to 1, time and counters reset to 0.
   void relax(double collisions_per_particle);
 
   /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
@@ -67,8 +67,11 @@ class Engine {
   std::array<double, D> momentum() const;
   std::uint64_t collisions() const { return collisions_; }
   std::uint64_t events() const { return events_; }
-  const std::string& stop_reason() const { return stop_reason_; }
-  const CollisionRecord& last_collision() const { return last_collision_; }
+  /// Why the engine stopped (meaningful after Status::stopped), and the CSV text for it.
+  StopReason stop_reason() const { return stop_reason_; }
+  std::string stop_message() const { return describe(stop_reason_, time()); }
+  Observer& observer() { return observer_; }
+  const Observer& observer() const { return observer_; }
   int cells_per_side() const { return cells_per_side_; }
   bool uses_neighbour_lists() const { return neighbour_lists_; }
 
@@ -78,21 +81,27 @@ class Engine {
   /// Throws std::logic_error if a pair is closer than 1 - 1e-10.
   void check_overlaps() const;
 
-  /// Observables at the current time.
-  Sample sample();  // takes (and resets) the contact moments accumulated since the last call
-  Snapshot snapshot() const;
+  /// Observables at the current time (sample_observers.hpp).
+  Sample sample() const { return temperature_sample(*this); }  // contacts: ContactStatistics
+  Snapshot snapshot() const { return snapshot_of(*this); }
 
-  /// Run settings that may change between relaxation and the cooling run.
-  void set_restitution(double eps) { rule_.restitution = eps; }
-  void set_randomization(Randomization mode) { mode_ = mode; }
-  void set_contact_statistics(bool on) { contacts_on_ = on; }
+  /// Read access for observers at sample times, particles in engine order (renumbered by cell):
+  /// position now, internal velocity u (physical v = u / clock().theta), original index.
+  void position_now(std::int32_t i, double* r) const;
+  const double* internal_velocity(std::int32_t i) const { return part_[i].v; }
+  std::int32_t original_index(std::int32_t i) const { return id_[i]; }
+  const InternalClock& clock() const { return clock_; }
+  static constexpr int dimension = D;
+
+  const CollisionModel& collision_model() const { return model_; }
+
+  /// Stop conditions (no physics): after `limit` collisions in all (0 = none), when T falls below
+  /// t_min (0 = never).
   void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
   void set_min_temperature(double t_min) { min_temperature_ = t_min; }
-  void set_tc(double tc) { tc_ = tc; }
   /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
   void resume() {
     stop_ = false;
-    stop_reason_.clear();
   }
   /// Full overlap check every `every` events (0 = never); throws std::logic_error on overlap.
   void set_debug_overlap_check(std::uint64_t every) { debug_check_every_ = every; }
@@ -103,10 +112,12 @@ class Engine {
  private:
   enum class Outcome { reached, resync, paused, stopped };
   template <class Shuffle>
-  Outcome run_events(double tau_stop, std::uint64_t event_limit, const Shuffle& shuffle);
-  Outcome dispatch(double tau_stop, std::uint64_t event_limit);
+  Outcome run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
+                     const Shuffle& shuffle);
+  Outcome dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model);
   template <class Shuffle>
-  void collide(std::int32_t i, std::int32_t j, const Shuffle& shuffle);
+  void collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
+               const Shuffle& shuffle);
   void cross_cell(std::int32_t i);
   void predict(std::int32_t i);
   double pair_time(std::int32_t i, std::int32_t j) const;
@@ -124,23 +135,17 @@ class Engine {
   void rebuild_neighbours(std::int32_t i);
   void build_neighbour_lists();
   void collect_neighbours(std::int32_t i, bool only_higher);
-  void add_neighbour(std::int32_t i, std::int32_t j);
-  void remove_neighbour(std::int32_t i, std::int32_t j);
-  void grow_neighbour_lists();
   void advance_particle(std::int32_t i);
   void resync();
   void rebuild_events();
   void sort_by_cell();
-  void place_particles(Rng& rng);
-  void draw_velocities(Rng& rng);
   void build_cells();
   int cell_of_position(const double* r) const;
   void cell_insert(std::int32_t i, int c);
   void file_in_cell(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
   void grow_cells();
-  void position_now(std::int32_t i, double* r) const;
-  void request_stop(std::string reason);
+  void request_stop(StopReason reason);
   double sum_velocity_squared() const;
   void scale_velocities(double factor);  // and recomputes sum_u2_
 
@@ -202,42 +207,23 @@ class Engine {
   void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
   std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
-  // Neighbour lists (dense spheres only): shell centres, lists of nl_capacity_ slots each.
+  // Neighbour lists (dense spheres only): shell centres and the lists.
   bool neighbour_lists_ = false;
   double shell_ = 0;
   std::vector<double> center_;
-  std::vector<std::int32_t> nl_, nl_count_;
-  int nl_capacity_ = 0;
-  // i's nl_capacity_ slots: its nl_count_[i] neighbours, then room (always one spare slot).
-  std::int32_t* neighbour_slots(std::int32_t i) {
-    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
-  }
-  const std::int32_t* neighbour_slots(std::int32_t i) const {
-    return nl_.data() + static_cast<std::size_t>(i) * nl_capacity_;
-  }
-  std::span<const std::int32_t> neighbours(std::int32_t i) const {
-    return {neighbour_slots(i), static_cast<std::size_t>(nl_count_[i])};
-  }
-  void prefetch_neighbour_list(std::int32_t i) const {
-    __builtin_prefetch(&nl_count_[i]);
-    __builtin_prefetch(neighbour_slots(i));
-    __builtin_prefetch(neighbour_slots(i) + 16);
-  }
+  NeighbourLists lists_;
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
   bool prefetch_ = true;  // software prefetches pay only when the data outgrow the cache
 
-  // Time and units: physical t = t_offset_ + theta_ * tau, physical v = u / theta_.
-  double now_ = 0, t_offset_ = 0, theta_ = 1;
+  // Time and units: physical t = t_offset + theta * tau, physical v = u / theta.
+  InternalClock clock_;
   double sum_u2_ = 0;  // sum of internal u^2, updated per collision, recomputed at resync
   std::uint64_t collisions_ = 0, events_ = 0;
 
-  // Settings.
-  CollisionRule rule_;
-  Randomization mode_ = Randomization::none;
-  double tc_ = 0;
-  bool contacts_on_ = false;
+  // The run's physics, and its stop conditions.
+  const CollisionModel model_;
   std::uint64_t collision_limit_ = 0;
   double min_temperature_ = 0;
   std::uint64_t debug_check_every_ = 0;
@@ -249,14 +235,16 @@ class Engine {
   std::uint64_t micro_run_ = 0;
   std::uint64_t stalled_events_ = 0;  // consecutive events at one time without a collision
 
-  // Observers.
-  ContactMoments contacts_;
-  CollisionRecord last_collision_;
+  Observer observer_;
   bool stop_ = false;
-  std::string stop_reason_;
+  StopReason stop_reason_ = StopReason::t_end;
 };
 
-extern template class Engine<2>;
-extern template class Engine<3>;
+extern template class Engine<2, NoObserver>;
+extern template class Engine<3, NoObserver>;
+extern template class Engine<2, ContactStatistics>;
+extern template class Engine<3, ContactStatistics>;
+extern template class Engine<2, LastCollision>;
+extern template class Engine<3, LastCollision>;
 
 }  // namespace molchaos::sim

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "molchaos/sim/parameters.hpp"
+#include "molchaos/sim/stop_reason.hpp"
 
 namespace molchaos::sim {
 
@@ -46,8 +47,13 @@ struct RunResult {
   std::uint64_t collisions = 0;
   std::uint64_t events = 0;
   double wall_seconds = 0;
-  std::string stop_reason;  // "t_end", "max_collisions", "min_temperature", "collapse: ..."
+  StopReason stop_reason = StopReason::t_end;  // the time it names: samples.back().t
   std::string version;      // molchaos version that produced it
 };
+
+/// The stop reason's text, as in the CSV header (its time is that of the last sample).
+inline std::string stop_message(const RunResult& r) {
+  return describe(r.stop_reason, r.samples.empty() ? 0.0 : r.samples.back().t);
+}
 
 }  // namespace molchaos::sim

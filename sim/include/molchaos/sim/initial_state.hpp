@@ -1,0 +1,26 @@
+// The initial state of a run: non-overlapping positions in the periodic box and Maxwell velocities
+// with zero momentum and T = 1. The relaxation that melts it is a run of the engine with the
+// elastic collision model (Engine::relax).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "molchaos/sim/rng.hpp"
+
+namespace molchaos::sim {
+
+/// n non-overlapping unit spheres (pair distances > 1 + 1e-9) in [0, box)^D, particle-major.
+/// Random sequential insertion while the packing fraction is low (< 0.25 disks, < 0.2 spheres)
+/// and it succeeds; otherwise a lattice with random vacancies and jitter (d = 2: staggered rows,
+/// d = 3: simple cubic). Throws std::runtime_error naming the reachable density when even the
+/// lattice does not fit.
+template <int D>
+std::vector<double> place_particles(std::int32_t n, double box, Rng& rng);
+
+/// D n Maxwell velocity components, particle-major, with zero total momentum and
+/// sum v^2 = n D (T = 1) up to rounding.
+template <int D>
+std::vector<double> maxwell_velocities(std::int32_t n, Rng& rng);
+
+}  // namespace molchaos::sim

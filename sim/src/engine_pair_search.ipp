@@ -1,0 +1,171 @@
+// Part of engine.cpp (included by it, one translation unit): the pair search of a prediction,
+// the hot inner loop of the engine. The contact time of two particles (scalar reference and the
+// SSE2 version for two partners at once), the gathering of a stencil's cell members, and the
+// branch-free selection of the earliest partner.
+
+// Time of contact of i (at clock_.now) and j (at its local time), or +inf: the smaller root of
+// |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)). The reference
+// arithmetic; with SSE2 the engine uses pair_times() below, which does the same operations.
+template <int D, class Observer>
+[[gnu::always_inline]] inline double Engine<D, Observer>::pair_time(std::int32_t i, std::int32_t j) const {
+  const Particle& pi = part_[i];
+  const Particle& pj = part_[j];
+  const double dtj = clock_.now - pj.t;
+  double b = 0, dr2 = 0, dv2 = 0;
+  for (int a = 0; a < D; ++a) {
+    double d = pi.r[a] - (pj.r[a] + pj.v[a] * dtj);
+    if (d > half_box_) d -= box_;
+    if (d < -half_box_) d += box_;
+    const double dv = pi.v[a] - pj.v[a];
+    b += d * dv;
+    dr2 += d * d;
+    dv2 += dv * dv;
+  }
+  if (b >= 0) return k_inf;
+  const double c = dr2 - 1.0;
+  const double disc = b * b - dv2 * c;
+  if (disc < 0) return k_inf;
+  const double dt = c / (-b + std::sqrt(disc));
+  return dt > 0 ? clock_.now + dt : clock_.now;  // c < 0: overlapping by rounding and approaching: now
+}
+
+#if defined(__SSE2__)
+
+// pair_time() for two partners at once: (time with j1, time with j2). Each half of the registers
+// does pair_time()'s operations in the same order; the components of the two partners are
+// regrouped (x1 x2), (y1 y2), (z1 z2) so that the sums and the root are shared. Branch-free (the
+// approach test b < 0 and the discriminant test are coin flips for the branch predictor): the
+// root is computed for every pair and replaced by +inf unless b < 0 and disc >= 0; the periodic
+// wrap adds or subtracts a masked box length instead of branching, which can only change the sign
+// of a zero component. collide() recomputes b with the scalar loop; the two can then differ at
+// most in the sign of a zero b, which both treat as "not approaching".
+template <int D, class Observer>
+[[gnu::always_inline]] inline __m128d Engine<D, Observer>::pair_times(std::int32_t i, std::int32_t j1,
+                                                            std::int32_t j2) const {
+  const Particle& pi = part_[i];
+  const Particle& p1 = part_[j1];
+  const Particle& p2 = part_[j2];
+  const __m128d zero = _mm_setzero_pd();
+  const __m128d now = _mm_set1_pd(clock_.now);
+  const __m128d half = _mm_set1_pd(half_box_), minus_half = _mm_set1_pd(-half_box_);
+  const __m128d box = _mm_set1_pd(box_);
+  const __m128d dtj = _mm_sub_pd(now, _mm_loadh_pd(_mm_load_sd(&p1.t), &p2.t));
+  __m128d b = zero, dr2 = zero, dv2 = zero;
+  for (int a = 0; a < D; ++a) {
+    const __m128d rj = _mm_loadh_pd(_mm_load_sd(&p1.r[a]), &p2.r[a]);
+    const __m128d vj = _mm_loadh_pd(_mm_load_sd(&p1.v[a]), &p2.v[a]);
+    __m128d d = _mm_sub_pd(_mm_set1_pd(pi.r[a]), _mm_add_pd(rj, _mm_mul_pd(vj, dtj)));
+    d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
+    d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
+    const __m128d dv = _mm_sub_pd(_mm_set1_pd(pi.v[a]), vj);
+    if (a == 0) {  // the scalar sums start with the x terms
+      b = _mm_mul_pd(d, dv);
+      dr2 = _mm_mul_pd(d, d);
+      dv2 = _mm_mul_pd(dv, dv);
+    } else {
+      b = _mm_add_pd(b, _mm_mul_pd(d, dv));
+      dr2 = _mm_add_pd(dr2, _mm_mul_pd(d, d));
+      dv2 = _mm_add_pd(dv2, _mm_mul_pd(dv, dv));
+    }
+  }
+  const __m128d c = _mm_sub_pd(dr2, _mm_set1_pd(1.0));
+  const __m128d disc = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(dv2, c));
+  const __m128d root = _mm_sqrt_pd(_mm_max_pd(disc, zero));
+  const __m128d dt = _mm_div_pd(c, _mm_sub_pd(root, b));
+  const __m128d t = _mm_add_pd(now, _mm_max_pd(dt, zero));
+  const __m128d valid = _mm_and_pd(_mm_cmplt_pd(b, zero), _mm_cmpge_pd(disc, zero));
+  return _mm_or_pd(_mm_and_pd(valid, t), _mm_andnot_pd(valid, _mm_set1_pd(k_inf)));
+}
+#endif
+
+// The members of the Count given cells, gathered into candidates_: each cell's slot block is
+// copied whole (fixed-size copies, unrolled: no branch) and the write position advanced by the
+// member count. Returns the number of candidates.
+template <int D, class Observer>
+template <int Count>
+[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::gather(const int* cells) {
+  std::int32_t* out = candidates_.data();
+  const std::int32_t* blocks = slots_.data() + slots_origin_;
+  const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
+  std::int32_t k = 0;
+  // Fixed-size copies of whole blocks, unrolled (slots_ and candidates_ are padded for them): no
+  // branch on the member counts, which are coin flips for the branch predictor.
+  auto copy_blocks = [&]<int Block>() {
+#pragma GCC unroll 27
+    for (int s = 0; s < Count; ++s) {
+      const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
+      std::memcpy(out + k, block + 1, Block * sizeof(std::int32_t));
+      k += block[0];
+    }
+  };
+  if (capacity_ <= 8) {
+    copy_blocks.template operator()<8>();
+  } else if (capacity_ <= k_gather_block) {
+    copy_blocks.template operator()<k_gather_block>();
+  } else {  // crowded cells (clusters): copy the members only
+    for (int s = 0; s < Count; ++s) {
+      const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
+      const std::int32_t members = block[0];
+      for (int m = 0; m < members; ++m) out[k + m] = block[1 + m];
+      k += members;
+    }
+  }
+  return k;
+}
+
+// The earliest collision of i (at clock_.now) with the listed candidates after `best`: updates best and
+// partner. Branch-free selection; candidates in list order, the first of equal times wins.
+// list[count] must be writable: an odd list is padded there with i itself (its pair time with
+// itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
+// the branch predictor would have to guess.
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::earliest(std::int32_t i, std::int32_t* list,
+                                                       std::int32_t count, double& best,
+                                                       std::int32_t& partner) const {
+  double b = best;
+  std::int32_t p = partner;
+  if (prefetch_)
+    for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
+#if defined(__SSE2__)
+  list[count] = i;
+  for (std::int32_t k = 0; k < count; k += 2) {  // two partners per pass, one in each half
+    const std::int32_t j1 = list[k], j2 = list[k + 1];
+    double t[2];
+    _mm_storeu_pd(t, pair_times(i, j1, j2));
+    p = t[0] < b ? j1 : p;
+    b = t[0] < b ? t[0] : b;
+    p = t[1] < b ? j2 : p;
+    b = t[1] < b ? t[1] : b;
+  }
+#else
+  for (std::int32_t k = 0; k < count; ++k) {
+    const std::int32_t j = list[k];
+    const double t = pair_time(i, j);
+    p = t < b ? j : p;
+    b = t < b ? t : b;
+  }
+#endif
+  best = b;
+  partner = p;
+}
+
+// True when the cell with coordinates x is not on the box boundary: its stencil needs no
+// periodic wrap and is given by fixed index offsets.
+template <int D, class Observer>
+[[gnu::always_inline]] inline bool Engine<D, Observer>::interior_cell(const int* x) const {
+  bool interior = true;
+  for (int a = 0; a < D; ++a)
+    interior = interior && static_cast<unsigned>(x[a] - 1) < static_cast<unsigned>(cells_per_side_ - 2);
+  return interior;
+}
+
+// The 3^D cells around i's cell (i's cell included).
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, int* stencil) const {
+  const int* x = cell_xyz_[i].data();
+  if (interior_cell(x)) {
+    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
+  } else {
+    neighbour_cells<D>(x, cells_per_side_, stencil);
+  }
+}

@@ -1,0 +1,411 @@
+// Part of engine.cpp (included by it: one translation unit, so that its explicit instantiations
+// cover these members): the engine's state outside the event loop. Construction (grid sizing,
+// initial state), set_state, the relaxation run, the resync that rescales velocities and restarts
+// the clock, the rebuild of cells, lists and calendar, cell storage, observables, debug checks.
+
+template <int D, class Observer>
+Engine<D, Observer>::Engine(const Parameters& p)
+    : model_(CollisionModel::from(p)), shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
+  validate(p);
+  if (p.dimension != D) throw std::invalid_argument("dimension: engine instantiated for another d");
+  n_ = static_cast<std::int32_t>(p.particles);
+  box_ = box_side(p);
+  half_box_ = 0.5 * box_;
+  const double packing_fraction =
+      (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) * p.density;
+  neighbour_lists_ = D == 3 && packing_fraction >= k_neighbour_list_packing &&
+                     box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
+  shell_ = neighbour_lists_ ? k_shell : 0.0;
+  const double width_target =
+      neighbour_lists_
+          ? 1.0 + 2.0 * shell_
+          : std::max(1.0, std::pow(k_cell_occupancy<D> / p.density, 1.0 / static_cast<double>(D)));
+  cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
+  if (!neighbour_lists_)
+    cells_per_side_ = std::max(cells_per_side_, std::min(4, static_cast<int>(std::floor(box_))));
+  // Cells: two particles in neighbouring cells are less than two cell widths apart along each
+  // axis, which must stay below half the box (4 cells or more), or the minimum image may flip
+  // between them while they approach and the collision would be missed. Neighbour lists: the
+  // list cutoff 1 + 2 shell is below half the box (box >= 3 cutoffs).
+  if (cells_per_side_ < (neighbour_lists_ ? 3 : 4))
+    throw std::invalid_argument("particles: box side " + std::to_string(box_) +
+                                " is below 4 sigma; use more particles or a higher density");
+  cell_width_ = box_ / cells_per_side_;
+  wall_.resize(static_cast<std::size_t>(cells_per_side_) + 1);
+  for (int k = 0; k < cells_per_side_; ++k) wall_[k] = k * cell_width_;
+  wall_[cells_per_side_] = box_;
+  for (int a = 0, stride = 1; a < D; ++a, stride *= cells_per_side_) stride_[a] = stride;
+  {
+    int middle[D];
+    for (int a = 0; a < D; ++a) middle[a] = 1;
+    int around[stencil_size<D>()];
+    neighbour_cells<D>(middle, cells_per_side_, around);
+    for (int s = 0; s < stencil_size<D>(); ++s)
+      stencil_offset_[s] = around[s] - cell_index<D>(middle, cells_per_side_);
+    for (int axis = 0; axis < D; ++axis)
+      for (int up = 0; up < 2; ++up) {
+        int slab[stencil_size<D>()];
+        slab_cells<D>(middle, cells_per_side_, axis, up ? 1 : -1, slab);
+        for (int s = 0; s < slab_size<D>(); ++s)
+          slab_offset_[2 * axis + up][s] = slab[s] - cell_index<D>(middle, cells_per_side_);
+      }
+  }
+
+  collision_limit_ = p.max_collisions;
+  min_temperature_ = p.min_temperature;
+  micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
+
+  const std::size_t n = static_cast<std::size_t>(n_);
+  part_.assign(n, Particle{});
+  cell_xyz_.resize(n);
+  id_.resize(n);
+  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
+  ev_.assign(n, EventData{});
+  last_collision_time_.assign(n, -k_inf);
+  slot_.assign(n, -1);
+  std::size_t cells = 1;
+  for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
+  cells_ = cells;
+  // Initial slots per cell: room for well above the mean occupancy (blocks of 8, 16, ... ints
+  // with the count); grows on overflow.
+  const double mean = static_cast<double>(n_) / static_cast<double>(cells);
+  capacity_ = 8 * static_cast<int>(std::ceil((3 * mean + 5) / 8)) - 1;
+  allocate_cells();
+
+  Rng rng(p.seed);
+  const std::vector<double> positions = place_particles<D>(n_, box_, rng);
+  const std::vector<double> velocities = maxwell_velocities<D>(n_, rng);
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) {
+      part_[i].r[a] = positions[D * i + a];
+      part_[i].v[a] = velocities[D * i + a];
+    }
+  sum_u2_ = sum_velocity_squared();
+  build_cells();
+  rebuild_events();
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::set_state(const std::vector<double>& positions,
+                          const std::vector<double>& velocities) {
+  const std::size_t size = static_cast<std::size_t>(n_) * D;
+  if (positions.size() != size || velocities.size() != size)
+    throw std::invalid_argument("set_state: wrong array sizes");
+  for (std::int32_t i = 0; i < n_; ++i) {
+    for (int a = 0; a < D; ++a) {
+      part_[i].r[a] = positions[D * i + a];
+      part_[i].v[a] = velocities[D * i + a];
+    }
+    part_[i].t = 0;
+    part_[i].counter = 0;
+    id_[i] = i;
+  }
+  sum_u2_ = sum_velocity_squared();
+  clock_ = InternalClock{};
+  std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
+  collisions_ = events_ = 0;
+  micro_run_ = 0;
+  stalled_events_ = 0;
+  stop_ = false;
+  build_cells();
+  rebuild_events();
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::relax(double collisions_per_particle) {
+  const std::uint64_t limit = collision_limit_;
+  const double t_min = min_temperature_;
+  min_temperature_ = 0;
+  const auto target = static_cast<std::uint64_t>(
+      std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
+  if (target > 0) {
+    collision_limit_ = collisions_ + target;
+    for (;;) {
+      const Outcome outcome =
+          dispatch(k_inf, std::numeric_limits<std::uint64_t>::max(), CollisionModel::elastic());
+      if (outcome == Outcome::resync) {
+        resync();
+        continue;
+      }
+      if (outcome != Outcome::paused) break;
+    }
+  }
+  collision_limit_ = limit;
+  min_temperature_ = t_min;
+  stop_ = false;
+
+  // Back to T = 1 exactly, zero momentum, t = 0.
+  for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
+  double mean[D] = {};
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) mean[a] += part_[i].v[a];
+  double sum = 0;
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) {
+      part_[i].v[a] -= mean[a] / n_;
+      sum += part_[i].v[a] * part_[i].v[a];
+    }
+  scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
+  clock_ = InternalClock{};
+  for (auto& particle : part_) particle.t = 0;
+  std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
+  collisions_ = events_ = 0;
+  micro_run_ = 0;
+  stalled_events_ = 0;
+  observer_ = Observer{};
+  rebuild_events();
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::position_now(std::int32_t i, double* r) const {
+  const double dt = clock_.now - part_[i].t;
+  for (int a = 0; a < D; ++a) r[a] = part_[i].r[a] + part_[i].v[a] * dt;
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::build_neighbour_lists() {
+  center_.resize(static_cast<std::size_t>(n_) * D);
+  int capacity = 0;  // 0: keep the capacity the lists grew to
+  if (lists_.capacity() == 0) {
+    const double cutoff = 1.0 + 2.0 * shell_;
+    const double expected = 4.0 / 3.0 * std::numbers::pi * cutoff * cutoff * cutoff *
+                            static_cast<double>(n_) / std::pow(box_, 3);
+    capacity = static_cast<int>(std::ceil(2 * expected + 8));
+  }
+  lists_.reset(n_, capacity);
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) center_[D * i + a] = part_[i].r[a];
+  for (std::int32_t i = 0; i < n_; ++i) collect_neighbours(i, true);
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::resync() {
+  for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
+  sum_u2_ = sum_velocity_squared();
+  const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
+  double factor = 1.0;
+  if (temperature < k_rescale_temperature && temperature > 0) {
+    factor = 1.0 / std::sqrt(temperature);
+    scale_velocities(factor);
+  }
+  for (auto& t : last_collision_time_) t = clock_.restarted(t, factor);
+  for (auto& particle : part_) particle.t = 0;
+  clock_.restart(factor);
+  rebuild_events();
+}
+
+// Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
+// reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
+// Only called with every particle at clock_.now and all predictions about to be redone.
+template <int D, class Observer>
+void Engine<D, Observer>::sort_by_cell() {
+  std::vector<std::int32_t> start(cells_ + 1, 0);
+  for (const auto& particle : part_) ++start[particle.cell + 1];
+  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+  std::vector<Particle> sorted(part_.size());
+  std::vector<double> last(part_.size());
+  std::vector<std::int32_t> ids(part_.size());
+  for (std::int32_t i = 0; i < n_; ++i) {
+    const std::int32_t to = start[part_[i].cell]++;
+    sorted[to] = part_[i];
+    last[to] = last_collision_time_[i];
+    ids[to] = id_[i];
+  }
+  part_.swap(sorted);
+  last_collision_time_.swap(last);
+  id_.swap(ids);
+  allocate_cells();
+  std::fill(slot_.begin(), slot_.end(), -1);
+  for (std::int32_t i = 0; i < n_; ++i) cell_insert(i, part_[i].cell);
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::rebuild_events() {
+  if (neighbour_lists_)  // cells by list centre = current position
+    for (std::int32_t i = 0; i < n_; ++i) {
+      for (int a = 0; a < D; ++a) {
+        double& x = part_[i].r[a];
+        if (x < 0) x += box_;
+        if (x >= box_) x -= box_;
+      }
+      part_[i].cell = cell_of_position(part_[i].r);
+    }
+  sort_by_cell();
+  if (neighbour_lists_) build_neighbour_lists();
+  prefetch_ = memory_bytes() > k_prefetch_min_bytes;
+  // Calendar buckets: about one event per bucket. The bucket width comes from the mean time to
+  // the particles' next events (measured after predicting with a provisional width).
+  const std::int64_t buckets = 4 * static_cast<std::int64_t>(n_);  // window ~ 4 mean waits
+  double width = calendar_.bucket_width();
+  for (int pass = 0; pass < 2; ++pass) {
+    calendar_.reset(n_, clock_.now, width, buckets);
+    for (std::int32_t i = 0; i < n_; ++i) predict(i);
+    double sum = 0;
+    std::int32_t finite = 0;
+    for (std::int32_t i = 0; i < n_; ++i) {
+      const double wait = calendar_.time(i) - clock_.now;
+      if (wait < k_inf) {
+        sum += wait;
+        ++finite;
+      }
+    }
+    if (finite == 0 || !(sum > 0)) break;
+    const double ideal = sum / finite / n_;  // events arrive at rate ~ n / mean wait
+    if (ideal > 0.5 * width && ideal < 2 * width) break;
+    width = ideal;
+  }
+}
+
+template <int D, class Observer>
+int Engine<D, Observer>::cell_of_position(const double* r) const {
+  int x[D];
+  for (int a = 0; a < D; ++a)
+    x[a] = std::clamp(static_cast<int>(std::floor(r[a] / cell_width_)), 0, cells_per_side_ - 1);
+  return cell_index<D>(x, cells_per_side_);
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::build_cells() {
+  allocate_cells();
+  std::fill(slot_.begin(), slot_.end(), -1);
+  for (std::int32_t i = 0; i < n_; ++i) {
+    for (int a = 0; a < D; ++a) {
+      double& x = part_[i].r[a];
+      if (x < 0) x += box_;
+      if (x >= box_) x -= box_;
+    }
+    cell_insert(i, cell_of_position(part_[i].r));
+  }
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::cell_insert(std::int32_t i, int c) {
+  cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
+  file_in_cell(i, c);
+}
+
+// Files i in the slots of cell c; cell_xyz_[i] must already hold c's coordinates (the hot path,
+// a cell crossing, knows them without divisions).
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
+  if (cell_block(c)[0] == capacity_) [[unlikely]] grow_cells();  // i is not filed: skipped
+  std::int32_t* block = cell_block(c);
+  part_[i].cell = c;
+  const std::int32_t k = block[0]++;
+  block[1 + k] = i;
+  slot_[i] = k;
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::allocate_cells() {
+  const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
+  // Room to align block 0 to 32 bytes (8 ints), and padding for gather()'s fixed-size copies.
+  slots_.assign(cells_ * stride + 8 + k_gather_block + 1, 0);
+  const auto address = reinterpret_cast<std::uintptr_t>(slots_.data());
+  slots_origin_ = ((32 - address % 32) % 32) / sizeof(std::int32_t);
+  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_ + k_gather_block);
+}
+
+// More slots per cell (a cluster formed): doubles the block size and re-files every particle.
+template <int D, class Observer>
+void Engine<D, Observer>::grow_cells() {
+  capacity_ = 2 * (capacity_ + 1) - 1;
+  allocate_cells();
+  for (std::int32_t k = 0; k < n_; ++k)
+    if (slot_[k] >= 0) {
+      std::int32_t* block = cell_block(part_[k].cell);
+      const std::int32_t m = block[0]++;
+      block[1 + m] = k;
+      slot_[k] = m;
+    }
+}
+
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
+  // Swap-remove: the cell's last member takes i's slot.
+  std::int32_t* block = cell_block(part_[i].cell);
+  const std::int32_t last = block[block[0]--];
+  block[1 + slot_[i]] = last;
+  slot_[last] = slot_[i];
+  slot_[i] = -1;
+}
+
+template <int D, class Observer>
+double Engine<D, Observer>::sum_velocity_squared() const {
+  double sum = 0;
+  for (const auto& particle : part_)
+    for (double v : particle.v) sum += v * v;
+  return sum;
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::scale_velocities(double factor) {
+  for (auto& particle : part_)
+    for (double& v : particle.v) v *= factor;
+  sum_u2_ = sum_velocity_squared();
+}
+
+template <int D, class Observer>
+double Engine<D, Observer>::time() const {
+  return clock_.time();
+}
+
+template <int D, class Observer>
+double Engine<D, Observer>::temperature() const {
+  const double sum = sum_velocity_squared();
+  return sum / (static_cast<double>(n_) * D * clock_.theta * clock_.theta);
+}
+
+template <int D, class Observer>
+double Engine<D, Observer>::kinetic_energy() const {
+  const double sum = sum_velocity_squared();
+  return 0.5 * sum / (clock_.theta * clock_.theta);
+}
+
+template <int D, class Observer>
+std::array<double, D> Engine<D, Observer>::momentum() const {
+  std::array<double, D> p{};
+  for (std::int32_t i = 0; i < n_; ++i)
+    for (int a = 0; a < D; ++a) p[a] += clock_.physical_velocity(part_[i].v[a]);
+  return p;
+}
+
+template <int D, class Observer>
+double Engine<D, Observer>::min_pair_distance() const {
+  std::vector<double> r(static_cast<std::size_t>(n_) * D);
+  for (std::int32_t i = 0; i < n_; ++i) position_now(i, &r[D * i]);
+  double best = k_inf;
+  int stencil[stencil_size<D>()];
+  for (std::int32_t i = 0; i < n_; ++i) {
+    neighbour_cells<D>(cell_xyz_[i].data(), cells_per_side_, stencil);
+    for (int s = 0; s < stencil_size<D>(); ++s)
+      for (const std::int32_t j : cell_members(stencil[s])) {
+        if (j <= i) continue;
+        double d2 = 0;
+        for (int a = 0; a < D; ++a) {
+          double d = r[D * i + a] - r[D * j + a];
+          if (d > half_box_) d -= box_;
+          if (d < -half_box_) d += box_;
+          d2 += d * d;
+        }
+        best = std::min(best, d2);
+      }
+  }
+  return std::sqrt(best);
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::check_overlaps() const {
+  const double d = min_pair_distance();
+  if (d < 1.0 - k_overlap_tolerance)
+    throw std::logic_error("overlap: closest pair at distance " + std::to_string(d) + " after " +
+                           std::to_string(events_) + " events");
+}
+
+template <int D, class Observer>
+std::size_t Engine<D, Observer>::memory_bytes() const {
+  auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
+         bytes(slot_) + bytes(slots_) + bytes(center_) + lists_.memory_bytes() +
+         calendar_.memory_bytes();
+}
