@@ -53,6 +53,20 @@ std::pair<double, double> b_routes(int d, const RunContacts& o, const RunContact
 
 Measurement mean_se(const std::vector<double>& v) { return mean_and_standard_error(v); }
 
+RoutePair route_pair(const std::vector<double>& cooling, const std::vector<double>& contact) {
+  RoutePair r;
+  std::vector<double> diff;
+  for (std::size_t i = 0; i < cooling.size(); ++i) diff.push_back(cooling[i] - contact[i]);
+  r.cooling = mean_se(cooling);
+  r.contact = mean_se(contact);
+  r.difference = mean_se(diff);
+  r.pairs = static_cast<int>(diff.size());
+  // cov of the means from var(difference) = var_c + var_k − 2 cov.
+  r.covariance = 0.5 * (r.cooling.error * r.cooling.error + r.contact.error * r.contact.error -
+                        r.difference.error * r.difference.error);
+  return r;
+}
+
 }  // namespace
 
 ContactMomentRow summarize_contacts(int dimension, double density, double restitution,
@@ -186,20 +200,17 @@ AnsatzFitRow fit_point(const GasPair& point, const PointShifts& s, const Eigen::
   row.beta_perp = {g2.beta(1), std::sqrt(g2.covariance(1, 1))};
   row.beta_covariance = g2.covariance(0, 1);
   row.chi2_two = g2.chi2;
-  std::vector<double> cool, contact, diff;
+  std::vector<double> cool, contact, par_cool, par_contact;
+  const double k_par = k_printed_dyad_factor - 1.0;  // printed: β∥ = (κ − 1) b
   for (const auto& [o, c] : paired(point)) {
     const auto [bc, bk] = b_routes(d, *o, *c);
     cool.push_back(bc);
     contact.push_back(bk);
-    diff.push_back(bc - bk);
+    par_cool.push_back(k_par * bc);
+    par_contact.push_back(shift(*o, *c)(0) / slopes_longitudinal(d).P);
   }
-  row.b_cooling = mean_se(cool);
-  row.b_contact = mean_se(contact);
-  row.b_difference = mean_se(diff);
-  // cov of the means from var(difference) = var_c + var_k − 2 cov.
-  row.b_covariance =
-      0.5 * (row.b_cooling.error * row.b_cooling.error + row.b_contact.error * row.b_contact.error -
-             row.b_difference.error * row.b_difference.error);
+  row.b_routes = route_pair(cool, contact);
+  row.beta_par_routes = route_pair(par_cool, par_contact);
   return row;
 }
 
@@ -230,26 +241,28 @@ std::vector<AnsatzFitRow> fit_ansatz(const std::vector<GasPair>& points) {
   return rows;
 }
 
-BRoutesVerdict compare_b_routes(const std::vector<AnsatzFitRow>& fits) {
+BRoutesVerdict compare_routes(const std::vector<RoutePair>& routes, const std::string& amplitude) {
   BRoutesVerdict v;
-  for (const auto& f : fits) {
-    if (f.b_difference.error <= 0.0) continue;
+  for (const auto& f : routes) {
+    if (f.difference.error <= 0.0) continue;
     ++v.points;
-    v.chi2_equal +=
-        std::pow(normal_score(f.b_difference.value / f.b_difference.error, f.pairs - 1), 2);
+    v.chi2_equal += std::pow(normal_score(f.difference.value / f.difference.error, f.pairs - 1), 2);
   }
   v.p_value = chi_square_p_value(v.chi2_equal, v.points);
-  // b_cooling = r b_contact: weights 1/var(b_c − r b_k), iterated to a fixed point.
+  const auto variance = [](const RoutePair& f, double r) {
+    return f.cooling.error * f.cooling.error + r * r * f.contact.error * f.contact.error -
+           2.0 * r * f.covariance;
+  };
+  // cooling = r · contact: weights 1/var(cooling − r contact), iterated to a fixed point.
   double r = 1.0, info = 0.0;
   for (int iteration = 0; iteration < 50; ++iteration) {
     double num = 0.0;
     info = 0.0;
-    for (const auto& f : fits) {
-      const double var = f.b_cooling.error * f.b_cooling.error +
-                         r * r * f.b_contact.error * f.b_contact.error - 2.0 * r * f.b_covariance;
+    for (const auto& f : routes) {
+      const double var = variance(f, r);
       if (!(var > 0.0)) continue;
-      num += f.b_cooling.value * f.b_contact.value / var;
-      info += f.b_contact.value * f.b_contact.value / var;
+      num += f.cooling.value * f.contact.value / var;
+      info += f.contact.value * f.contact.value / var;
     }
     if (info <= 0.0) break;
     const double next = num / info;
@@ -258,20 +271,19 @@ BRoutesVerdict compare_b_routes(const std::vector<AnsatzFitRow>& fits) {
   }
   // Error from the information, inflated by √(χ²/dof) of the fit when above 1 (as fit_line).
   double chi2_ratio = 0.0;
-  for (const auto& f : fits) {
-    const double var = f.b_cooling.error * f.b_cooling.error +
-                       r * r * f.b_contact.error * f.b_contact.error - 2.0 * r * f.b_covariance;
-    if (var > 0.0) chi2_ratio += std::pow(f.b_cooling.value - r * f.b_contact.value, 2) / var;
-  }
+  for (const auto& f : routes)
+    if (variance(f, r) > 0.0)
+      chi2_ratio += std::pow(f.cooling.value - r * f.contact.value, 2) / variance(f, r);
   const double inflate = v.points > 1 ? std::max(1.0, chi2_ratio / (v.points - 1)) : 1.0;
   v.ratio = {r, info > 0.0 ? std::sqrt(inflate / info) : 0.0};
   // Two-sided 3σ (p = 0.0027), the suite's threshold for a single number.
   v.verdict = v.p_value >= 0.0027 ? "consistent" : "inconsistent";
   v.statement = fmt::format(
-      "Over {} state points b from the cooling rate is {:.2f} ± {:.2f} times b from the contact "
+      "Over {} state points {} from the cooling rate is {:.2f} ± {:.2f} times {} from the contact "
       "statistics, and equality gives chi2 = {:.1f} for {} dof (p = {:.2g}): the two routes are "
       "{}.",
-      v.points, v.ratio.value, v.ratio.error, v.chi2_equal, v.points, v.p_value, v.verdict);
+      v.points, amplitude, v.ratio.value, v.ratio.error, amplitude, v.chi2_equal, v.points,
+      v.p_value, v.verdict);
   return v;
 }
 

@@ -209,9 +209,19 @@ void ansatz_claims(CorrelationStudy& S) {
   S.claims.push_back({"angular structure as printed: beta_perp = -beta_par/2",
                       std::abs(dev.value) <= 3.0 * dev.error ? "holds" : "fails", dev,
                       "weighted mean of beta_perp + beta_par/2 over the points"});
-  S.b_routes = compare_b_routes(S.ansatz);
+  std::vector<RoutePair> b, beta;
+  for (const auto& f : S.ansatz) {
+    b.push_back(f.b_routes);
+    beta.push_back(f.beta_par_routes);
+  }
+  S.b_routes = compare_routes(b, "b");
   S.claims.push_back({"b from the cooling rate equals b from the contact statistics",
                       S.b_routes.verdict, S.b_routes.ratio, S.b_routes.statement});
+  S.beta_par_routes = compare_routes(beta, "beta_par");
+  S.claims.push_back(
+      {"two amplitudes close the gap: beta_par from the cooling rate equals "
+       "beta_par from <(c1.e)(c2.e)>",
+       S.beta_par_routes.verdict, S.beta_par_routes.ratio, S.beta_par_routes.statement});
 }
 
 void control_claims(CorrelationStudy& S) {

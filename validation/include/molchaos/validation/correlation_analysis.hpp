@@ -3,6 +3,7 @@
 // frequency and energy loss per collision, the ansatz fitted at contact, the two routes to b.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "molchaos/validation/contact_measurement.hpp"
@@ -28,9 +29,11 @@ CoolingDecompositionRow decompose_cooling(const GasPair& point);
 /// points of the same dimension and density (a 4×4 matrix from ~8 seeds alone would bias χ²).
 std::vector<AnsatzFitRow> fit_ansatz(const std::vector<GasPair>& points);
 
-/// b_cooling against b_contact over all points: ratio (weighted fit through the origin, errors in
-/// both and their covariance) and χ² of equality from the paired per-point differences.
-BRoutesVerdict compare_b_routes(const std::vector<AnsatzFitRow>& fits);
+/// An amplitude from the cooling rate against the same from the contact statistics over all
+/// points: ratio (weighted fit through the origin, errors in both and their covariance) and χ² of
+/// equality from the paired per-point differences (t scores mapped to normal scores).
+/// `amplitude` names it in the statement, e.g. "b".
+BRoutesVerdict compare_routes(const std::vector<RoutePair>& routes, const std::string& amplitude);
 
 /// The dyad factor of the printed ansatz, 3r̂r̂ − U.
 inline constexpr double k_printed_dyad_factor = 3.0;

@@ -41,7 +41,8 @@ struct CorrelationStudy {
   std::vector<PairCorrelationRow> pair_correlations;
   std::vector<CoolingDecompositionRow> decomposition;
   std::vector<AnsatzFitRow> ansatz;
-  BRoutesVerdict b_routes;
+  BRoutesVerdict b_routes;         ///< printed ansatz: b_cooling against b_contact
+  BRoutesVerdict beta_par_routes;  ///< two amplitudes: β∥ from cooling against ⟨(c1·e)(c2·e)⟩
   std::vector<StudyClaim> claims;  ///< claim, verdict, deciding number
   int failed_runs = 0;
   double seconds = 0.0;

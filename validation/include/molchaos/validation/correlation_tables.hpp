@@ -48,6 +48,13 @@ struct CoolingDecompositionRow {
   Measurement log_dissipation;  ///< ln(Y_chaos/Y_orig): the energy-loss-per-collision deficit
 };
 
+/// One amplitude obtained two ways from the same runs, paired by seed.
+struct RoutePair {
+  Measurement cooling, contact, difference;
+  double covariance = 0.0;  ///< covariance of the two means (same runs)
+  int pairs = 0;
+};
+
 /// Shifts at contact (original − chaos, a2 difference removed) fitted by the ansatz.
 struct AnsatzFitRow {
   int dimension = 2;
@@ -62,9 +69,12 @@ struct AnsatzFitRow {
   Measurement beta_par, beta_perp;
   double beta_covariance = 0.0;
   double chi2_two = 0.0;  ///< 2 dof
-  // The two routes to b (printed dyad, linear order), paired by seed.
-  Measurement b_cooling, b_contact, b_difference;
-  double b_covariance = 0.0;  ///< covariance of the two means (same runs)
+  // The two routes to b (printed dyad, linear order), paired by seed: from the cooling rate and
+  // from the contact dyad 3(c1·e)(c2·e) − c1·c2.
+  RoutePair b_routes;
+  // The two routes to β∥ (two-amplitude form): from the cooling rate (which depends on β∥ only)
+  // and from the longitudinal contact moment ⟨(c1·e)(c2·e)⟩ alone.
+  RoutePair beta_par_routes;
 };
 
 /// One claim of the study for the report: what is claimed, the verdict, the number deciding it.
