@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "molchaos/validation/correlation_tables.hpp"
 #include "molchaos/validation/figure_data.hpp"
 #include "molchaos/validation/flow_field.hpp"
 
@@ -58,5 +59,21 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
 /// Writes fig_flow_field.{png,pdf,gp}.
 RenderedFigure render_flow_field(const validation::FlowFieldData& data,
                                  const RenderOptions& options);
+
+/// G∥(r) and G⊥(r) of the original and the molecular-chaos gas at every stored time, one state
+/// point. Writes fig_pair_correlations.{png,pdf,gp}.
+RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrelationRow>& rows,
+                                        int dimension, double density, double restitution,
+                                        const RenderOptions& options);
+
+/// ⟨(c1·e)(c2·e)⟩ and ⟨c1·c2⟩ at contact against ε, one panel per (d, n).
+/// Writes fig_contact_moments.{png,pdf,gp}.
+RenderedFigure render_contact_moments(const std::vector<validation::ContactMomentRow>& rows,
+                                      const RenderOptions& options);
+
+/// ln(A_orig/A_chaos) and its two factors (collision frequency, energy loss per collision)
+/// against ε, one panel per (d, n). Writes fig_cooling_decomposition.{png,pdf,gp}.
+RenderedFigure render_cooling_decomposition(
+    const std::vector<validation::CoolingDecompositionRow>& rows, const RenderOptions& options);
 
 }  // namespace molchaos::figures

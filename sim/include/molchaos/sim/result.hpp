@@ -2,6 +2,7 @@
 // indicators of the homogeneous cooling state, contact statistics), optional snapshots.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ struct ContactMoments {
   double sum_gn2 = 0;        // (c12.e)^2
   double sum_abs_gn = 0;     // |c12.e|
   double sum_g2 = 0;         // |c12|^2
+  /// Impact parameter s = (1 − (ĝ·e)²)^((d−1)/2) (|sin θ| in 2D, sin²θ in 3D; uniform on [0, 1)
+  /// under molecular chaos) in equal bins; filled by accumulate() of contact_statistics.hpp.
+  static constexpr int k_impact_bins = 10;
+  std::array<std::uint64_t, k_impact_bins> impact_histogram{};
 };
 
 struct Sample {

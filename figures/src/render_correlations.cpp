@@ -1,0 +1,181 @@
+// The correlation study's figures: pair velocity correlations G∥(r), G⊥(r) of the original and
+// the molecular-chaos gas at three times; the contact moments against ε; the cooling rate taken
+// apart into collision frequency and energy loss per collision against ε.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include "figure_script.hpp"
+#include "molchaos/figures/render.hpp"
+
+namespace molchaos::figures {
+namespace {
+
+std::string gas_label(const std::string& mode) {
+  return mode == "none" ? "original" : "molecular chaos (flux)";
+}
+
+// Appends "$block using ... with yerrorbars/linespoints" for one data set.
+void add_series(detail::FigureScript& script, std::string& plot, const std::string& block,
+                detail::Rows rows, const std::string& style, std::size_t colour,
+                const std::string& title) {
+  script.data.emplace_back(block, std::move(rows));
+  detail::add_plot_element(plot, "$" + block + " using 1:2:3 with " + style + " linecolor rgb " +
+                                     detail::colour(colour) + " title " + detail::quote(title));
+}
+
+// "p<panel>_s<series>", appended piecewise (GCC 12 warns falsely about "literal" + std::string).
+std::string block_name(std::size_t panel, std::size_t series) {
+  std::string name = "p";
+  name += std::to_string(panel);
+  name += "_s";
+  name += std::to_string(series);
+  return name;
+}
+
+}  // namespace
+
+RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrelationRow>& rows,
+                                        int dimension, double density, double restitution,
+                                        const RenderOptions& options) {
+  std::set<std::tuple<std::string, double>> sets;  // (mode, τ)
+  for (const auto& r : rows)
+    if (r.dimension == dimension && r.density == density && r.restitution == restitution &&
+        r.side == "all")
+      sets.emplace(r.mode, r.tau);
+  detail::require_non_empty("rows (of the requested state point)", sets.size());
+  detail::FigureScript script;
+  script.basename = "fig_pair_correlations";
+  script.description =
+      "Velocity correlations of pairs at separation r: G_par = <(c1.r)(c2.r)>, G_perp =\n"
+      "<c1.c2 - (c1.r)(c2.r)>/(d - 1), c = v/sqrt(2T). Blocks: r (bin centre), G, error.";
+  script.canvas.png_width = 1600;
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = 7.2;
+  script.canvas.pdf_height = 3.4;
+  std::string& c = script.commands;
+  c += "  set multiplot layout 1,2 title " +
+       detail::quote("d = " + std::to_string(dimension) + ", n = " + detail::label_number(density) +
+                     ", ε = " + detail::label_number(restitution)) +
+       "\n";
+  c += "  set logscale x\n  set xlabel 'r/σ'\n  set key top right font font_small box opaque\n";
+  c += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  for (int which = 0; which < 2; ++which) {
+    c += std::string("  set ylabel ") + (which == 0 ? "'G_{∥}(r)'" : "'G_{⊥}(r)'") + "\n";
+    std::string plot = "  plot 0 with lines linecolor rgb 'black' dashtype 2 notitle";
+    std::size_t k = 0, time_index = 0;
+    std::string previous_mode;
+    for (const auto& [mode, tau] : sets) {
+      if (mode != previous_mode) time_index = 0;
+      previous_mode = mode;
+      detail::Rows data;
+      for (const auto& r : rows)
+        if (r.dimension == dimension && r.density == density && r.restitution == restitution &&
+            r.side == "all" && r.mode == mode && r.tau == tau) {
+          const auto& g = which == 0 ? r.G_par : r.G_perp;
+          data.push_back({std::sqrt(r.r_lo * r.r_hi), g.value, g.error});
+        }
+      const std::string style = std::string("yerrorlines pointtype ") +
+                                (mode == "none" ? "7" : "6") + " pointsize 0.8 dashtype " +
+                                (mode == "none" ? "1" : "2");
+      add_series(script, plot, block_name(static_cast<std::size_t>(which), k), data, style,
+                 time_index + 1,
+                 gas_label(mode) + ", τ = " + detail::label_number(std::round(tau)));
+      ++k;
+      ++time_index;
+    }
+    c += plot + "\n";
+  }
+  return detail::render(script, options);
+}
+
+RenderedFigure render_contact_moments(const std::vector<validation::ContactMomentRow>& rows,
+                                      const RenderOptions& options) {
+  std::set<std::pair<int, double>> panels;
+  for (const auto& r : rows) panels.emplace(r.dimension, r.density);
+  detail::require_non_empty("rows", panels.size());
+  detail::FigureScript script;
+  script.basename = "fig_contact_moments";
+  script.description =
+      "Collision averages of pre-collision velocities, c = v/sqrt(2T): <(c1.e)(c2.e)> and\n"
+      "<c1.c2>; molecular chaos gives -1/4 + a2/16 for both. Blocks: eps, value, error.";
+  detail::begin_epsilon_panels(script, panels.size(), "contact moments", "collision average",
+                               "bottom right");
+  std::size_t p = 0;
+  for (const auto& [d, n] : panels) {
+    std::string plot =
+        "  plot -0.25 with lines linecolor rgb 'black' dashtype 2 title "
+        "'molecular chaos, a_2 = 0'";
+    std::size_t s = 0;
+    for (const std::string mode : {"none", "flux"})
+      for (int which = 0; which < 2; ++which) {
+        detail::Rows data;
+        for (const auto& r : rows)
+          if (r.dimension == d && r.density == n && r.mode == mode) {
+            const auto& m = which == 0 ? r.c1e_c2e : r.c1_dot_c2;
+            data.push_back({r.restitution + (which - 0.5) * 0.002, m.value, m.error});
+          }
+        add_series(
+            script, plot, block_name(p, s), data,
+            std::string("yerrorbars pointtype ") + (mode == "none" ? "7" : "6"),
+            static_cast<std::size_t>(which) + 1,
+            std::string(which == 0 ? "<(c_1·e)(c_2·e)>" : "<c_1·c_2>") + ", " + gas_label(mode));
+        ++s;
+      }
+    script.commands +=
+        "  set title " +
+        detail::quote("d = " + std::to_string(d) + ", n = " + detail::label_number(n)) +
+        "\n  set autoscale\n" + plot + "\n";
+    ++p;
+  }
+  return detail::render(script, options);
+}
+
+RenderedFigure render_cooling_decomposition(
+    const std::vector<validation::CoolingDecompositionRow>& rows, const RenderOptions& options) {
+  std::set<std::pair<int, double>> panels;
+  for (const auto& r : rows) panels.emplace(r.dimension, r.density);
+  detail::require_non_empty("rows", panels.size());
+  detail::FigureScript script;
+  script.basename = "fig_cooling_decomposition";
+  script.description =
+      "The cooling rate taken apart, original gas against molecular chaos (paired by seed):\n"
+      "ln(A_orig/A_chaos) fitted, and its two factors ln(omega_chaos/omega_orig) (collision\n"
+      "frequency) and ln(Y_chaos/Y_orig) (energy loss per collision). Blocks: eps, value, error.";
+  detail::begin_epsilon_panels(script, panels.size(), "cooling rate taken apart", "logarithm",
+                               "top right");
+  std::size_t p = 0;
+  for (const auto& [d, n] : panels) {
+    std::string plot = "  plot 0 with lines linecolor rgb 'black' dashtype 2 notitle";
+    for (int which = 0; which < 3; ++which) {
+      detail::Rows data;
+      for (const auto& r : rows)
+        if (r.dimension == d && r.density == n) {
+          const auto m = which == 0   ? validation::Measurement{std::log(r.A_ratio.value),
+                                                              r.A_ratio.error / r.A_ratio.value}
+                         : which == 1 ? r.log_frequency
+                                      : r.log_dissipation;
+          data.push_back({r.restitution + (which - 1) * 0.002, m.value, m.error});
+        }
+      const char* titles[] = {"ln(A_{orig}/A_{chaos}), Haff fit",
+                              "ln(ω_{chaos}/ω_{orig}), collision frequency",
+                              "ln(Y_{chaos}/Y_{orig}), energy loss per collision"};
+      add_series(script, plot, block_name(p, static_cast<std::size_t>(which)), data,
+                 std::string("yerrorbars pointtype ") + (which == 0   ? "7"
+                                                         : which == 1 ? "5"
+                                                                      : "9"),
+                 static_cast<std::size_t>(which) + 1, titles[which]);
+    }
+    script.commands +=
+        "  set title " +
+        detail::quote("d = " + std::to_string(d) + ", n = " + detail::label_number(n)) +
+        "\n  set autoscale\n" + plot + "\n";
+    ++p;
+  }
+  return detail::render(script, options);
+}
+
+}  // namespace molchaos::figures

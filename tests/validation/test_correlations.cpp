@@ -1,0 +1,205 @@
+// The correlation study's measurements on data with known answers: pair correlation functions of
+// independent Maxwell velocities vanish at every r, the cell list finds the same pairs as all
+// pairs, the contact accumulator reproduces the molecular-chaos collision averages and a flat
+// impact-parameter histogram, and the ansatz's closed-form slopes agree with the theory library's
+// quadrature.
+#define BOOST_TEST_MODULE validation_correlations
+#include <algorithm>
+#include <boost/test/unit_test.hpp>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "molchaos/sim/contact_statistics.hpp"
+#include "molchaos/sim/run.hpp"
+#include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/contact_ansatz.hpp"
+#include "molchaos/validation/contact_measurement.hpp"
+#include "molchaos/validation/pair_correlations.hpp"
+
+using namespace molchaos;
+using namespace molchaos::validation;
+
+namespace {
+
+// N particles at uniform random positions (overlaps allowed: an ideal gas, g = 1) with
+// independent Maxwell velocities at temperature T.
+sim::Snapshot ideal_gas(int d, int n, double box, double T, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, box);
+  std::normal_distribution<double> gauss(0.0, std::sqrt(T));
+  sim::Snapshot s;
+  s.box = box;
+  for (int i = 0; i < n * d; ++i) {
+    s.positions.push_back(u(rng));
+    s.velocities.push_back(gauss(rng));
+  }
+  return s;
+}
+
+// Upper bound of the acceptable χ²: p = 1e-3 (a false alarm once in a thousand runs).
+bool chi_square_acceptable(const ChiSquare& c) { return c.p_value > 1e-3; }
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(independent_velocities_have_no_pair_correlations) {
+  for (int d : {2, 3}) {
+    std::mt19937_64 rng(11 + d);
+    const double box = d == 2 ? 100.0 : 24.0;
+    std::vector<SnapshotPairSums> sums;
+    for (int k = 0; k < 6; ++k) {
+      const auto snap = ideal_gas(d, 2000, box, 0.37, rng);
+      sums.push_back(pair_sums(snap, d, pair_grid(0.5 * box, 10, 0.05, 12)));
+    }
+    const auto bins = combine_pair_sums(sums, d);
+    const ChiSquare c = chi_square_zero_velocity_correlations(bins);
+    BOOST_TEST_MESSAGE("d = " << d << ": chi2 = " << c.chi2 << ", dof = " << c.dof
+                              << ", p = " << c.p_value);
+    BOOST_TEST(c.dof == 2 * 22);
+    BOOST_TEST(chi_square_acceptable(c));
+    // g = 1 for an ideal gas: the same global test on the Poisson errors.
+    double chi2_g = 0.0;
+    int dof_g = 0;
+    for (const auto& b : bins)
+      if (b.side == PairSide::all && b.g.error > 0) {
+        chi2_g += std::pow((b.g.value - 1.0) / b.g.error, 2);
+        ++dof_g;
+      }
+    BOOST_TEST(chi_square_p_value(chi2_g, dof_g) > 1e-3);
+    // Approaching and receding pairs add up to all of them.
+    for (std::size_t k = 0; k + 2 < bins.size(); k += 3)
+      BOOST_TEST(bins[k].pairs == bins[k + 1].pairs + bins[k + 2].pairs);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(real_snapshot_with_shuffled_velocities_has_no_pair_correlations) {
+  // Positions of an elastic hard-disk gas (g ≠ 1 near contact), velocities permuted at random.
+  sim::Parameters p;
+  p.particles = 2000;
+  p.density = 0.1;
+  p.t_end = 5.0;
+  p.snapshot_times = {1.0, 3.0, 5.0};
+  const auto run = sim::run(p);
+  std::mt19937_64 rng(5);
+  std::vector<SnapshotPairSums> sums;
+  for (auto snap : run.snapshots) {
+    std::vector<std::size_t> order(static_cast<std::size_t>(p.particles));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    const auto v = snap.velocities;
+    for (std::size_t i = 0; i < order.size(); ++i)
+      for (int a = 0; a < 2; ++a) snap.velocities[2 * i + a] = v[2 * order[i] + a];
+    sums.push_back(pair_sums(snap, 2, pair_grid(0.5 * snap.box, 10, 0.05, 12)));
+  }
+  const ChiSquare c = chi_square_zero_velocity_correlations(combine_pair_sums(sums, 2));
+  BOOST_TEST_MESSAGE("shuffled hard-disk snapshots: chi2 = " << c.chi2 << ", dof = " << c.dof);
+  BOOST_TEST(chi_square_acceptable(c));
+  // No overlaps: nothing below contact is binned, and g near contact exceeds 1 (Enskog's g2).
+  const auto bins = combine_pair_sums(sums, 2);
+  BOOST_TEST(bins.front().g.value > 1.0);
+}
+
+BOOST_AUTO_TEST_CASE(cell_list_finds_the_same_pairs_as_all_pairs) {
+  std::mt19937_64 rng(3);
+  for (int d : {2, 3}) {
+    const double box = d == 2 ? 60.0 : 20.0;
+    const auto snap = ideal_gas(d, 1500, box, 1.0, rng);
+    const std::vector<double> near{1.0, 1.5, 2.0, 3.0};  // box/3 ≥ 3: cell list
+    std::vector<double> all = near;
+    all.push_back(0.5 * box);  // cells of half the box: all pairs
+    const auto a = pair_sums(snap, d, near), b = pair_sums(snap, d, all);
+    for (std::size_t k = 0; k + 1 < near.size(); ++k)
+      for (int s = 0; s < 3; ++s) {
+        BOOST_TEST(a.bins[k].pairs[s] == b.bins[k].pairs[s]);
+        BOOST_TEST(a.bins[k].sum_par[s] == b.bins[k].sum_par[s],
+                   boost::test_tools::tolerance(1e-12));
+      }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(contact_accumulator_reproduces_molecular_chaos) {
+  // Maxwell pairs with a uniformly random contact normal, accepted with probability ∝ the
+  // collision flux |g·e| (bounded by 10√(2T): the tail beyond is e^{−50}): colliding pairs
+  // under molecular chaos, where P = Q = −1/4, Y = 1 and the impact parameter is uniform.
+  for (int d : {2, 3}) {
+    std::mt19937_64 rng(17 + d);
+    const double T = 2.5;
+    std::normal_distribution<double> gauss(0.0, std::sqrt(T));
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    sim::ContactMoments m;
+    std::vector<double> P, Q, Y;
+    const double bound = 10.0 * std::sqrt(2.0 * T);
+    while (m.count < 200000) {
+      double vi[3], vj[3], e[3], norm = 0.0, gn = 0.0;
+      for (int a = 0; a < d; ++a) {
+        vi[a] = gauss(rng);
+        vj[a] = gauss(rng);
+        e[a] = gauss(rng);
+        norm += e[a] * e[a];
+      }
+      for (int a = 0; a < d; ++a) {
+        e[a] /= std::sqrt(norm);
+        gn += (vi[a] - vj[a]) * e[a];
+      }
+      if (!(gn < 0) || unit(rng) * bound > -gn) continue;
+      const sim::ContactMoments before = m;
+      if (d == 2)
+        sim::accumulate<2>(m, vi, vj, e, T);
+      else
+        sim::accumulate<3>(m, vi, vj, e, T);
+      P.push_back(m.sum_c1e_c2e - before.sum_c1e_c2e);
+      Q.push_back(m.sum_c1_dot_c2 - before.sum_c1_dot_c2);
+      Y.push_back(0.5 * (m.sum_gn2 - before.sum_gn2));
+    }
+    const ContactQuantities mc = molecular_chaos_contact(0.0);
+    double chi2 = 0.0;
+    for (const auto& [values, expected] :
+         {std::pair{P, mc.P}, std::pair{Q, mc.Q}, std::pair{Y, mc.Y}}) {
+      const Measurement x = mean_and_standard_error(values);
+      BOOST_TEST_MESSAGE("d = " << d << ": " << x.value << " +- " << x.error << " (expected "
+                                << expected << ")");
+      chi2 += std::pow((x.value - expected) / x.error, 2);
+    }
+    BOOST_TEST(chi_square_p_value(chi2, 3) > 1e-3);
+    const std::vector<std::uint64_t> h(m.impact_histogram.begin(), m.impact_histogram.end());
+    const FlatnessTest flat = impact_flatness(h);
+    BOOST_TEST_MESSAGE("impact parameter: chi2 = " << flat.chi2 << ", dof = " << flat.dof);
+    BOOST_TEST(flat.count == m.count);
+    BOOST_TEST(flat.p_value > 1e-3);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(impact_histogram_detects_head_on_collisions) {
+  // All collisions head-on: every count in the first bin, flatness rejected.
+  sim::ContactMoments m;
+  const double vi[2] = {-1.0, 0.0}, vj[2] = {1.0, 0.0}, e[2] = {1.0, 0.0};
+  for (int k = 0; k < 100; ++k) sim::accumulate<2>(m, vi, vj, e, 1.0);
+  BOOST_TEST(m.impact_histogram[0] == 100u);
+  const std::vector<std::uint64_t> h(m.impact_histogram.begin(), m.impact_histogram.end());
+  BOOST_TEST(impact_flatness(h).p_value < 1e-10);
+}
+
+BOOST_AUTO_TEST_CASE(closed_form_slopes_agree_with_quadrature) {
+  // ⟨D⟩_coll(b) = (J_D + b J_DD)/(J_1 + b J_D) (theory library, quadrature): at b = 0 it is
+  // κ P − Q, its b-derivative κ ∂P/∂b − ∂Q/∂b, and W's b-derivative is ⟨D⟩ itself.
+  theory::QuadratureOptions q;
+  q.relative_tolerance = 1e-10;
+  for (int d : {2, 3})
+    for (double kappa : {3.0, static_cast<double>(d)}) {
+      const auto J = theory::contact_integrals(d, 0.0, kappa, q);
+      const double mean = J.dyad.value / J.one.value;
+      const double slope = J.dyad_squared.value / J.one.value - mean * mean;
+      const ContactQuantities mc = molecular_chaos_contact(0.0), s = slopes_dyad(d, kappa);
+      BOOST_TEST(mean == kappa * mc.P - mc.Q, boost::test_tools::tolerance(1e-8));
+      BOOST_TEST(slope == kappa * s.P - s.Q, boost::test_tools::tolerance(1e-8));
+      BOOST_TEST(s.W == mean, boost::test_tools::tolerance(1e-8));
+      // d ln(W·Y)/db is the b coefficient of μ2 (−3/2 printed, −3/4 traceless in 2D).
+      const auto mu = theory::expand_collision_moment(d, 2, 0.5, kappa, q);
+      BOOST_TEST(s.W + s.Y == mu.term("b").coefficient.value, boost::test_tools::tolerance(1e-8));
+      // First order in a2: ⟨D⟩ at small a2 against the closed form, O(a2²) apart.
+      const double a2 = 1e-3;
+      const auto Ja = theory::contact_integrals(d, a2, kappa, q);
+      const ContactQuantities mca = molecular_chaos_contact(a2);
+      BOOST_TEST(std::abs(Ja.dyad.value / Ja.one.value - (kappa * mca.P - mca.Q)) < 10 * a2 * a2);
+    }
+}

@@ -1,0 +1,29 @@
+// Collision averages at contact predicted by the paper's two-particle distribution (its eq.
+// f2genform reduced at contact) and by its two-amplitude generalisation, in closed form:
+//   f2 = f f g2 [1 + β∥ (c1·e)(c2·e) + β⊥ (c1·c2 − (c1·e)(c2·e))],
+// the printed dyad b(κ(c1·e)(c2·e) − c1·c2) being β∥ = (κ − 1) b, β⊥ = −b (κ = 3 printed, κ = d
+// traceless). Derivation and sympy check: theory/derivations/contact_correlations.py.
+#pragma once
+
+namespace molchaos::validation {
+
+/// The four contact quantities, each a collision average (weight Θ(−c12·e)|c12·e|), c = v/√(2T):
+/// P = ⟨(c1·e)(c2·e)⟩, Q = ⟨c1·c2⟩, W = ω/ω_Enskog, Y = ⟨(v12·e)²⟩/(4T).
+struct ContactQuantities {
+  double P = 0.0, Q = 0.0, W = 0.0, Y = 0.0;
+};
+
+/// Molecular chaos (β∥ = β⊥ = 0) with the Sonine coefficient a2, to first order in a2 (any d):
+/// P = Q = −1/4 + a2/16, W = 1 − a2/16, Y = 1 + a2/4 (so W·Y = 1 + 3a2/16, μ2's a2 term).
+ContactQuantities molecular_chaos_contact(double a2);
+
+/// ∂/∂β∥ and ∂/∂β⊥ of the four quantities at a2 = 0 (exact, linear order in the amplitudes):
+/// ∂/∂β∥: P 3/8, Q 3/8, W −1/4, Y −1/2;  ∂/∂β⊥: P 0, Q (d − 1)/4, W 0, Y 0.
+ContactQuantities slopes_longitudinal(int dimension);
+ContactQuantities slopes_transverse(int dimension);
+
+/// ∂/∂b of the four quantities for the printed-form dyad with factor κ: (κ − 1)∂/∂β∥ − ∂/∂β⊥.
+/// κ = 3, d = 2: P 3/4, Q 1/2, W −1/2, Y −1 (d ln(W·Y)/db = −3/2, the cooling rate's b term).
+ContactQuantities slopes_dyad(int dimension, double dyad_factor);
+
+}  // namespace molchaos::validation

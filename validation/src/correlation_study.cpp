@@ -1,0 +1,352 @@
+// The correlation study's driver: one sweep (contact runs shared with reproduce() through the
+// cache, new runs with snapshots for the pair correlations), then the tables and the claims.
+#include "molchaos/validation/correlation_study.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "molchaos/validation/correlation_analysis.hpp"
+#include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/pair_correlations.hpp"
+#include "molchaos/validation/report.hpp"
+
+namespace molchaos::validation {
+
+CorrelationStudyConfig CorrelationStudyConfig::quick_look() {
+  CorrelationStudyConfig c;
+  c.particles = 1000;
+  c.restitutions = {0.8, 0.9};
+  c.contact_seeds = 4;
+  c.snapshot_restitutions = {0.8};
+  c.snapshot_seeds = 2;
+  c.restitutions_3d = {0.8};
+  c.seeds_3d = 4;
+  return c;
+}
+
+namespace {
+
+using sim::Randomization;
+
+EnsembleSpec study_spec(const CorrelationStudyConfig& cfg, int d, std::vector<double> densities,
+                        std::vector<double> restitutions, int seeds) {
+  EnsembleSpec s;  // the defaults of reproduce()'s Fig. 4 ensemble: same runs, same cache keys
+  s.dimension = d;
+  s.particles = cfg.particles;
+  s.densities = std::move(densities);
+  s.restitutions = std::move(restitutions);
+  s.modes = {Randomization::none, Randomization::flux};
+  s.seeds = seeds;
+  s.base_seed = cfg.base_seed;
+  s.contact_statistics = true;
+  return s;
+}
+
+std::vector<sim::Parameters> with_snapshots(const CorrelationStudyConfig& cfg,
+                                            const EnsembleSpec& spec) {
+  auto runs = expand(spec);
+  for (auto& p : runs) {
+    const double tau0 = theory_tau0(p.dimension, p.density, p.restitution);
+    p.contact_statistics = false;
+    p.snapshot_times.clear();
+    for (double f : cfg.snapshot_times_in_tau0) p.snapshot_times.push_back(f * tau0);
+  }
+  return runs;
+}
+
+// Collisions per particle at time t, interpolated linearly between the samples.
+double collisions_per_particle_at(const sim::RunResult& run, double t) {
+  const auto& s = run.samples;
+  const double n = static_cast<double>(run.parameters.particles);
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (s[k].t >= t) {
+      const double w = (t - s[k - 1].t) / (s[k].t - s[k - 1].t);
+      return 2.0 / n *
+             ((1 - w) * static_cast<double>(s[k - 1].collisions) + w * double(s[k].collisions));
+    }
+  return s.empty() ? 0.0 : 2.0 * static_cast<double>(s.back().collisions) / n;
+}
+
+// The outcomes of one (density, restitution) in expand() order: modes × seeds.
+template <class F>
+void for_each_point(const EnsembleSpec& spec, const std::vector<RunOutcome>& outcomes,
+                    std::size_t offset, F f) {
+  std::size_t k = offset;
+  for (double n : spec.densities)
+    for (double e : spec.restitutions) {
+      std::vector<std::vector<const RunOutcome*>> by_mode(spec.modes.size());
+      for (auto& group : by_mode)
+        for (int i = 0; i < spec.seeds; ++i) group.push_back(&outcomes.at(k++));
+      f(n, e, by_mode);
+    }
+}
+
+void add_contact_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int d, double n,
+                       double e, const std::vector<std::vector<const RunOutcome*>>& by_mode,
+                       std::vector<GasPair>& pairs) {
+  GasPair gp{d, n, e, {}, {}};
+  for (std::size_t m = 0; m < by_mode.size(); ++m)
+    for (const auto* o : by_mode[m]) {
+      if (!o->ok) continue;
+      (m == 0 ? gp.original : gp.chaos).push_back(measure_contacts(o->result, cfg.window));
+    }
+  S.contact_moments.push_back(summarize_contacts(d, n, e, "none", gp.original));
+  S.contact_moments.push_back(summarize_contacts(d, n, e, "flux", gp.chaos));
+  S.decomposition.push_back(decompose_cooling(gp));
+  pairs.push_back(std::move(gp));
+}
+
+void add_pair_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int d, double n,
+                    double e, const std::vector<std::vector<const RunOutcome*>>& by_mode) {
+  for (std::size_t m = 0; m < by_mode.size(); ++m)
+    for (std::size_t k = 0; k < cfg.snapshot_times_in_tau0.size(); ++k) {
+      std::vector<SnapshotPairSums> sums;
+      double tau = 0.0;
+      for (const auto* o : by_mode[m]) {
+        if (!o->ok || o->result.snapshots.size() <= k) continue;
+        const auto& snap = o->result.snapshots[k];
+        const FitWindow w =
+            choose_window(o->result.samples, o->result.parameters.particles, cfg.window);
+        if (!w.valid || snap.t < w.t_start || snap.t > w.t_stop) continue;  // not in the HCS
+        const auto edges = pair_grid(0.5 * snap.box, 10, 0.05, 16);
+        sums.push_back(pair_sums(snap, d, edges));
+        tau += collisions_per_particle_at(o->result, snap.t);
+      }
+      if (sums.empty()) continue;
+      tau /= static_cast<double>(sums.size());
+      for (const auto& b : combine_pair_sums(sums, d))
+        S.pair_correlations.push_back({d, n, e, m == 0 ? "none" : "flux", tau,
+                                       static_cast<int>(sums.size()), to_string(b.side), b.r_lo,
+                                       b.r_hi, b.g, b.G_par, b.G_perp, b.G_par_snapshot_error,
+                                       b.G_perp_snapshot_error, b.pairs});
+    }
+}
+
+}  // namespace
+
+namespace {
+
+std::string verdict_p(double p) { return p >= 0.0027 ? "holds" : "fails"; }
+
+// Inverse-variance weighted mean of values with errors (points without an error skipped).
+Measurement weighted_mean(const std::vector<Measurement>& v) {
+  double sw = 0.0, swx = 0.0;
+  for (const auto& m : v)
+    if (m.error > 0.0) {
+      sw += 1.0 / (m.error * m.error);
+      swx += m.value / (m.error * m.error);
+    }
+  return sw > 0.0 ? Measurement{swx / sw, 1.0 / std::sqrt(sw)} : Measurement{};
+}
+
+void cooling_claims(CorrelationStudy& S) {
+  double chi2 = 0.0;
+  int dof = 0;
+  std::vector<Measurement> diffs;
+  for (const auto& r : S.decomposition)
+    if (r.difference.error > 0.0) {
+      chi2 += std::pow(normal_score(r.difference.value / r.difference.error, r.pairs - 1), 2);
+      ++dof;
+      diffs.push_back(r.difference);
+    }
+  const double p = chi_square_p_value(chi2, dof);
+  S.claims.push_back(
+      {"cooling rate = collision frequency x energy loss per collision: "
+       "A_orig/A_chaos equals (omega Y)_chaos/(omega Y)_orig at every point",
+       verdict_p(p), weighted_mean(diffs),
+       fmt::format("weighted mean of A ratio − product; chi2 = {:.1f}, dof = {}, "
+                   "p = {:.2g}",
+                   chi2, dof, p)});
+  std::vector<std::pair<int, double>> groups;
+  for (const auto& r : S.decomposition)
+    if (std::find(groups.begin(), groups.end(), std::pair{r.dimension, r.density}) == groups.end())
+      groups.emplace_back(r.dimension, r.density);
+  for (const auto& [d, n] : groups) {
+    std::vector<Measurement> w, y;
+    for (const auto& r : S.decomposition)
+      if (r.dimension == d && r.density == n) {
+        w.push_back(r.log_frequency);
+        y.push_back(r.log_dissipation);
+      }
+    const Measurement mw = weighted_mean(w), my = weighted_mean(y);
+    for (const auto& [what, m] : {std::pair{"collision-frequency deficit ln(omega_chaos/"
+                                            "omega_orig)",
+                                            mw},
+                                  std::pair{"energy-loss deficit ln(Y_chaos/Y_orig)", my}})
+      S.claims.push_back(
+          {fmt::format("{} (d = {}, n = {}), weighted over eps", what, d, n),
+           std::abs(m.value) > 3.0 * m.error ? "resolved" : "not resolved", m,
+           fmt::format("share of ln(A_orig/A_chaos): {:.2f}", m.value / (mw.value + my.value))});
+  }
+}
+
+void ansatz_claims(CorrelationStudy& S) {
+  double chi1 = 0.0, chi2 = 0.0;
+  int points = 0;
+  std::vector<Measurement> deviation;  // β⊥ + β∥/2: zero for the printed dyad
+  for (const auto& f : S.ansatz) {
+    chi1 += f.chi2_one;
+    chi2 += f.chi2_two;
+    ++points;
+    const double var = f.beta_perp.error * f.beta_perp.error +
+                       0.25 * f.beta_par.error * f.beta_par.error + f.beta_covariance;
+    deviation.push_back(
+        {f.beta_perp.value + 0.5 * f.beta_par.value, std::sqrt(std::max(var, 0.0))});
+  }
+  const double p1 = chi_square_p_value(chi1, 3 * points), p2 = chi_square_p_value(chi2, 2 * points);
+  S.claims.push_back(
+      {"one b (printed dyad 3 rr - U) fixes all four shifts at contact (P, Q, "
+       "omega, energy loss)",
+       verdict_p(p1), Measurement{chi1 / std::max(1, 3 * points), 0.0},
+       fmt::format("chi2/dof, chi2 = {:.1f}, dof = {}, p = {:.2g}", chi1, 3 * points, p1)});
+  S.claims.push_back(
+      {"two amplitudes (longitudinal, transverse) fix all four shifts", verdict_p(p2),
+       Measurement{chi2 / std::max(1, 2 * points), 0.0},
+       fmt::format("chi2/dof, chi2 = {:.1f}, dof = {}, p = {:.2g}", chi2, 2 * points, p2)});
+  const Measurement dev = weighted_mean(deviation);
+  S.claims.push_back({"angular structure as printed: beta_perp = -beta_par/2",
+                      std::abs(dev.value) <= 3.0 * dev.error ? "holds" : "fails", dev,
+                      "weighted mean of beta_perp + beta_par/2 over the points"});
+  std::vector<RoutePair> b, beta;
+  for (const auto& f : S.ansatz) {
+    b.push_back(f.b_routes);
+    beta.push_back(f.beta_par_routes);
+  }
+  S.b_routes = compare_routes(b, "b");
+  S.claims.push_back({"b from the cooling rate equals b from the contact statistics",
+                      S.b_routes.verdict, S.b_routes.ratio, S.b_routes.statement});
+  S.beta_par_routes = compare_routes(beta, "beta_par");
+  S.claims.push_back(
+      {"two amplitudes close the gap: beta_par from the cooling rate equals "
+       "beta_par from <(c1.e)(c2.e)>",
+       S.beta_par_routes.verdict, S.beta_par_routes.ratio, S.beta_par_routes.statement});
+}
+
+void control_claims(CorrelationStudy& S) {
+  double chi2 = 0.0;
+  int dof = 0;
+  for (const auto& r : S.contact_moments) {
+    if (r.mode != "flux") continue;
+    const ContactQuantities mc = molecular_chaos_contact(r.a2.value);
+    for (const auto& [m, v] :
+         {std::pair{r.c1e_c2e, mc.P}, std::pair{r.c1_dot_c2, mc.Q},
+          std::pair{r.omega_over_enskog, mc.W}, std::pair{r.gn2_over_4T, mc.Y}})
+      if (m.error > 0.0) {
+        chi2 += std::pow(normal_score((m.value - v) / m.error, r.runs - 1), 2);
+        ++dof;
+      }
+  }
+  const double p = chi_square_p_value(chi2, dof);
+  S.claims.push_back(
+      {"flux-shuffled gas: contact moments equal their molecular-chaos values", verdict_p(p),
+       Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
+       fmt::format(
+           "chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as independent), "
+           "chi2 = {:.1f}, dof = {}, p = {:.2g}",
+           chi2, dof, p)});
+  for (const char* mode : {"flux", "none"}) {
+    double c = 0.0;
+    int k = 0;
+    for (const auto& r : S.pair_correlations) {
+      if (r.mode != mode || r.side != "all") continue;
+      for (const auto& m : {r.G_par, r.G_perp})
+        if (m.error > 0.0) {
+          c += std::pow(m.value / m.error, 2);
+          ++k;
+        }
+    }
+    const double pv = chi_square_p_value(c, k);
+    S.claims.push_back(
+        {fmt::format("{}: no velocity correlations at any r (G_par = G_perp = 0)",
+                     std::string(mode) == "flux" ? "flux-shuffled gas" : "original gas"),
+         verdict_p(pv), Measurement{k > 0 ? c / k : 0.0, 0.0},
+         fmt::format("chi2/dof over all bins and times, chi2 = {:.1f}, dof = {}, "
+                     "p = {:.2g}",
+                     c, k, pv)});
+  }
+}
+
+}  // namespace
+
+CorrelationStudy run_correlation_study(const CorrelationStudyConfig& cfg,
+                                       const SweepOptions& sweep) {
+  const auto start = std::chrono::steady_clock::now();
+  CorrelationStudy S;
+  const EnsembleSpec c2 = study_spec(cfg, 2, cfg.densities, cfg.restitutions, cfg.contact_seeds);
+  const EnsembleSpec c3 = study_spec(cfg, 3, {cfg.density_3d}, cfg.restitutions_3d, cfg.seeds_3d);
+  const EnsembleSpec p2 =
+      study_spec(cfg, 2, cfg.densities, cfg.snapshot_restitutions, cfg.snapshot_seeds);
+  const EnsembleSpec p3 =
+      study_spec(cfg, 3, {cfg.density_3d}, cfg.restitutions_3d, cfg.snapshot_seeds);
+  std::vector<sim::Parameters> all;
+  std::vector<std::size_t> offsets;
+  for (const auto& [spec, snapshots] :
+       {std::pair{&c2, false}, std::pair{&c3, false}, std::pair{&p2, true}, std::pair{&p3, true}}) {
+    offsets.push_back(all.size());
+    const auto runs = snapshots ? with_snapshots(cfg, *spec) : expand(*spec);
+    all.insert(all.end(), runs.begin(), runs.end());
+  }
+  SweepOptions options = sweep;
+  options.label = sweep.label + ", correlation study";
+  const auto outcomes = run_sweep(all, options);
+  for (const auto& o : outcomes) S.failed_runs += o.ok ? 0 : 1;
+
+  std::vector<GasPair> pairs;
+  for (int k = 0; k < 2; ++k) {
+    const EnsembleSpec& spec = k == 0 ? c2 : c3;
+    for_each_point(spec, outcomes, offsets[k], [&](double n, double e, const auto& by_mode) {
+      add_contact_point(S, cfg, spec.dimension, n, e, by_mode, pairs);
+    });
+  }
+  for (int k = 2; k < 4; ++k) {
+    const EnsembleSpec& spec = k == 2 ? p2 : p3;
+    for_each_point(spec, outcomes, offsets[k], [&](double n, double e, const auto& by_mode) {
+      add_pair_point(S, cfg, spec.dimension, n, e, by_mode);
+    });
+  }
+  S.ansatz = fit_ansatz(pairs);
+  cooling_claims(S);
+  ansatz_claims(S);
+  control_claims(S);
+  S.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return S;
+}
+
+std::string contact_moments_csv(const CorrelationStudy& S) {
+  std::string out =
+      "dimension,density,restitution,randomize,runs,omega_over_enskog,omega_over_enskog_err,"
+      "gn2_over_4T,gn2_over_4T_err,c1e_c2e,c1e_c2e_err,c1_dot_c2,c1_dot_c2_err,a2,a2_err,A,A_err,"
+      "impact_chi2,impact_dof\n";
+  for (const auto& r : S.contact_moments)
+    out += fmt::format(
+        "{},{},{},{},{},{:.8g},{:.3g},{:.8g},{:.3g},{:.8g},{:.3g},{:.8g},{:.3g},"
+        "{:.6g},{:.3g},{:.8g},{:.3g},{:.4g},{}\n",
+        r.dimension, r.density, r.restitution, r.mode, r.runs, r.omega_over_enskog.value,
+        r.omega_over_enskog.error, r.gn2_over_4T.value, r.gn2_over_4T.error, r.c1e_c2e.value,
+        r.c1e_c2e.error, r.c1_dot_c2.value, r.c1_dot_c2.error, r.a2.value, r.a2.error, r.A.value,
+        r.A.error, r.impact_chi2, r.impact_dof);
+  return out;
+}
+
+std::string pair_correlations_csv(const CorrelationStudy& S) {
+  std::string out =
+      "dimension,density,restitution,randomize,tau,snapshots,side,r_lo,r_hi,g,g_err,G_par,"
+      "G_par_err,G_perp,G_perp_err,G_par_err_snapshots,G_perp_err_snapshots,pairs\n";
+  for (const auto& r : S.pair_correlations)
+    out += fmt::format(
+        "{},{},{},{},{:.4g},{},{},{:.6g},{:.6g},{:.6g},{:.3g},{:.5g},{:.3g},{:.5g},"
+        "{:.3g},{:.3g},{:.3g},{}\n",
+        r.dimension, r.density, r.restitution, r.mode, r.tau, r.snapshots, r.side, r.r_lo, r.r_hi,
+        r.g.value, r.g.error, r.G_par.value, r.G_par.error, r.G_perp.value, r.G_perp.error,
+        r.G_par_snapshot_error, r.G_perp_snapshot_error, r.pairs);
+  return out;
+}
+
+void write_correlation_tables(const CorrelationStudy& S, const std::string& directory) {
+  write_file_atomically(directory + "/contact_moments.csv", contact_moments_csv(S));
+  write_file_atomically(directory + "/pair_correlations.csv", pair_correlations_csv(S));
+}
+
+}  // namespace molchaos::validation
