@@ -14,13 +14,13 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/sim/sim.hpp"
+#include "parameter_options.hpp"
 
 namespace molchaos::app {
 namespace {
 
 struct SimulateOptions {
   sim::Parameters parameters;
-  std::string randomize = "none";
   std::string out = "run.csv";
   bool quiet = false;
 };
@@ -32,12 +32,7 @@ std::string snapshot_path(const std::string& out, std::size_t index) {
 }
 
 void run_simulate(const SimulateOptions& options) {
-  sim::Parameters p = options.parameters;
-  const auto mode = sim::parse_randomization(options.randomize);
-  if (!mode)
-    throw UsageError("--randomize",
-                     "unknown value '" + options.randomize + "'; allowed: none, paper, flux");
-  p.randomize = *mode;
+  const sim::Parameters& p = options.parameters;
   require_writable_file("--out", options.out, /*create_parent=*/false);
   try {
     sim::validate(p);
@@ -87,53 +82,7 @@ void add_simulate_command(CLI::App& app) {
   sim::Parameters& p = options->parameters;
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Event-driven MD of inelastic hard disks/spheres; writes the T(t) time series");
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  cmd->add_option("--dim", p.dimension, "Dimension d")
-      ->check(integer_in(2, 3))
-      ->capture_default_str();
-  cmd->add_option("--particles", p.particles, "Number of particles N")
-      ->check(integer_in(2, 100000000))
-      ->capture_default_str();
-  cmd->add_option(
-         "--density", p.density,
-         "Reduced density n = N sigma^d / V, in (0, close packing): (0, 1.1547) for d = 2, "
-         "(0, 1.41421) for d = 3")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--restitution", p.restitution, "Coefficient of restitution")
-      ->check(real_in(0, false, 1, true))
-      ->capture_default_str();
-  cmd->add_option("--randomize", options->randomize, "Velocity shuffle: none, paper, flux")
-      ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Random seed")
-      ->check(unsigned_integer())
-      ->capture_default_str();
-  cmd->add_option("--t-end", p.t_end, "Physical duration of the cooling run")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--relax", p.relax_collisions_per_particle,
-                  "Elastic collisions per particle before t = 0")
-      ->check(real_in(0, true, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--tc", p.tc, "TC model duration (0 = off)")
-      ->check(real_in(0, true, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--samples-per-decade", p.samples_per_decade, "Samples per decade of time")
-      ->check(integer_in(1, 10000))
-      ->capture_default_str();
-  cmd->add_option("--t-first-sample", p.t_first_sample, "First log-spaced sample time")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_flag("--contacts", p.contact_statistics, "Record contact statistics of collisions");
-  cmd->add_option("--snapshot-times", p.snapshot_times,
-                  "Times of position/velocity snapshots (written next to --out)")
-      ->check(real_in(0, true, inf, false));
-  cmd->add_option("--max-collisions", p.max_collisions, "Stop after this many collisions (0 = no)")
-      ->check(unsigned_integer())
-      ->capture_default_str();
-  cmd->add_option("--min-temperature", p.min_temperature, "Stop when T/T0 falls below (0 = no)")
-      ->check(real_in(0, true, 1, false))
-      ->capture_default_str();
+  add_parameter_options(cmd, p);  // every row of the parameter table
   cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
   cmd->add_flag("--quiet", options->quiet, "No progress display");
   cmd->callback([options] { run_simulate(*options); });

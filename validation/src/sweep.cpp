@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "molchaos/sim/csv.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/validation/sweep_reporter.hpp"
 
@@ -28,14 +29,9 @@ std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index) {
 }
 
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version) {
-  std::string s = fmt::format(
-      "version={};dimension={};particles={};density={:.17g};restitution={:.17g};randomize={};"
-      "seed={};t_end={:.17g};relax={:.17g};tc={:.17g};samples_per_decade={};t_first={:.17g};"
-      "contacts={};max_collisions={};min_temperature={:.17g};snapshots=",
-      version, p.dimension, p.particles, p.density, p.restitution, sim::to_string(p.randomize),
-      p.seed, p.t_end, p.relax_collisions_per_particle, p.tc, p.samples_per_decade,
-      p.t_first_sample, p.contact_statistics ? 1 : 0, p.max_collisions, p.min_temperature);
-  for (double t : p.snapshot_times) s += fmt::format("{:.17g},", t);
+  std::string s = "version=" + version + ";";
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    s += std::string(info.name) + "=" + sim::format_value(p, info) + ";";
   return s;
 }
 

@@ -16,7 +16,8 @@ namespace molchaos::validation {
 /// from a thread, rank or clock, so a run's result does not depend on who ran it.
 std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index);
 
-/// Canonical text of every parameter (round-trip precision) plus the code version.
+/// Canonical text of the code version and every parameter of the table, "name=value;" with
+/// values as the CSV header prints them (shortest round-trip decimals).
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version);
 
 /// Cache file name: 16 hex digits of a 64-bit FNV-1a hash of canonical_parameters().
