@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::app {
@@ -141,6 +142,21 @@ inline void require_writable_directory(const std::string& flag, const std::strin
     throw UsageError(flag, "cannot write into '" + existing.string() + "' (permission denied)");
 }
 
+/// require_writable_directory, then creates the directory and a real file in it (removed again):
+/// catches what permissions do not show (/proc, /sys, read-only or full file systems).
+inline void require_usable_directory(const std::string& flag, const std::string& directory) {
+  namespace fs = std::filesystem;
+  require_writable_directory(flag, directory);
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw UsageError(flag, "cannot create '" + directory + "': " + ec.message());
+  try {
+    sim::probe_writable((fs::path(directory) / "probe").string());
+  } catch (const std::exception& e) {
+    throw UsageError(flag, e.what());
+  }
+}
+
 /// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (or,
 /// with `create_parent`, can be created) and is writable, and `path` is not a directory.
 inline void require_writable_file(const std::string& flag, const std::string& path,
@@ -149,10 +165,23 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
   if (path.empty()) throw UsageError(flag, "empty file name");
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw UsageError(flag, "'" + path + "' is a directory");
+  // The file is replaced by rename: only a regular file (not through a symlink) or a new name.
+  const auto status = fs::symlink_status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw UsageError(flag, "'" + path +
+                               "' exists and is not a regular file (a device, FIFO, socket or "
+                               "symlink); give a new name or a regular file");
   const fs::path parent = fs::path(path).parent_path();
   if (!create_parent && !parent.empty() && !fs::exists(parent, ec))
     throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
   require_writable_directory(flag, parent.string());
+  if (!create_parent || parent.empty() || fs::exists(parent, ec)) {
+    try {
+      sim::probe_writable(path);  // a real file, so /proc, /sys and over-long names fail now
+    } catch (const std::exception& e) {
+      throw UsageError(flag, e.what());
+    }
+  }
 }
 
 }  // namespace molchaos::app

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -13,6 +13,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/sim.hpp"
 #include "parameter_options.hpp"
 
@@ -25,15 +26,21 @@ struct SimulateOptions {
   bool quiet = false;
 };
 
+// "dir/run.csv" -> "dir/run.snapshot<k>.csv": the extension of the file name only (a dot in a
+// directory name such as data.v2/ or ../ is not an extension).
 std::string snapshot_path(const std::string& out, std::size_t index) {
-  const auto dot = out.rfind('.');
-  const std::string stem = (dot == std::string::npos || dot == 0) ? out : out.substr(0, dot);
-  return stem + ".snapshot" + std::to_string(index) + ".csv";
+  const std::filesystem::path p(out);
+  std::string stem = p.filename().string();
+  const auto dot = stem.rfind('.');
+  if (dot != std::string::npos && dot != 0) stem.resize(dot);
+  return (p.parent_path() / (stem + ".snapshot" + std::to_string(index) + ".csv")).string();
 }
 
 void run_simulate(const SimulateOptions& options) {
   const sim::Parameters& p = options.parameters;
   require_writable_file("--out", options.out, /*create_parent=*/false);
+  for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
+    require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
@@ -56,17 +63,10 @@ void run_simulate(const SimulateOptions& options) {
   if (show_progress) std::fprintf(stderr, "\n");
 
   sim::write_csv_file(result, options.out);
-  for (std::size_t k = 0; k < result.snapshots.size(); ++k) {
-    const std::string path = snapshot_path(options.out, k);
-    const std::string temporary = path + ".tmp";
-    {
-      std::ofstream file(temporary);
+  for (std::size_t k = 0; k < result.snapshots.size(); ++k)
+    sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
       sim::write_snapshot_csv(result.snapshots[k], p.dimension, file);
-      if (!file) throw std::runtime_error("cannot write " + temporary);
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-      throw std::runtime_error("cannot rename " + temporary + " to " + path);
-  }
+    });
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
                result.stop_reason.c_str(), options.out.c_str());

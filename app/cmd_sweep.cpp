@@ -51,7 +51,7 @@ void run_sweep_command(SweepCliOptions& o) {
                        fmt::format("value {} is at or above close packing {:.6f} for --dim {}", n,
                                    sim::close_packing_density(o.spec.dimension), o.spec.dimension));
   if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
-  if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
+  if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   try {
     validation::validate(o.spec);
   } catch (const std::invalid_argument& e) {

@@ -1,8 +1,6 @@
 // The result CSV: writer (atomic file replacement) and reader (header back into Parameters).
 #include "molchaos/sim/csv.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
@@ -85,25 +84,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
 }
 
 void write_csv_file(const RunResult& result, const std::string& path) {
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + temporary);
-    write_csv(result, out);
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("write failed: " + temporary);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
-  }
+  write_file_atomically(path, [&](std::ostream& out) { write_csv(result, out); });
 }
 
 RunResult read_csv(std::istream& in) {
