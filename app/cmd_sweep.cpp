@@ -78,11 +78,14 @@ void run_sweep_command(SweepCliOptions& o) {
           s.restitution, s.mode, p.collision_ratio.value, p.collision_ratio.error, s.runs);
       continue;
     }
+    // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
     const double se = std::hypot(s.A.error, p.A_theory.error);
-    std::cout << fmt::format("{:>8} {:>6} {:>6} {:>12.5f} {:>10.5f} {:>12.5f} {:>9.2f} {:>5}\n",
-                             s.density, s.restitution, s.mode, s.A.value, s.A.error,
-                             p.A_theory.value, se > 0 ? (s.A.value - p.A_theory.value) / se : 0.0,
-                             s.runs);
+    const bool error_bar = s.runs >= 2 && se > 0;
+    std::cout << fmt::format(
+        "{:>8} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density, s.restitution,
+        s.mode, s.A.value, error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
+        error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
+        error_bar ? "" : "  (no error bar: fewer than 2 runs)");
     for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
   }
   if (!o.out.empty()) {

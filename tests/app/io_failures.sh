@@ -26,6 +26,16 @@ sed -i '1s/.*/# cache_key = 0000000000000000/' "$entry"
 grep -q "stored under key" third.err || fail "wrong key not reported"
 echo "ok: corrupted cache entries are reported and recomputed"
 
+# 6. The cleaner removes only its own temporaries: not a user's file with ".tmp." in its name, not
+# another writer's in-progress file.
+touch cache/thesis.tmp.tex cache/run.csv.tmp.99999999 "cache/.x.csv.molchaos-tmp.otherhost.1.0123456789abcdef"
+"$bin" "${args[@]}" > /dev/null 2>&1 || fail "sweep with foreign files in the cache"
+for f in thesis.tmp.tex run.csv.tmp.99999999 .x.csv.molchaos-tmp.otherhost.1.0123456789abcdef; do
+  [ -e "cache/$f" ] || fail "the cache cleaner deleted $f"
+done
+rm -f cache/thesis.tmp.tex cache/run.csv.tmp.99999999 cache/.x.csv.molchaos-tmp.*
+echo "ok: the cleaner leaves other files alone"
+
 # 3. Unwritable outputs fail before the work, exit 2 naming the flag.
 expect2() {
   local flag=$1; shift
