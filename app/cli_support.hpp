@@ -5,12 +5,17 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::app {
 
@@ -33,18 +38,22 @@ inline std::string format_interval(double lo, bool lo_closed, double hi, bool hi
   return std::string(lo_closed ? "[" : "(") + num(lo) + ", " + num(hi) + (hi_closed ? "]" : ")");
 }
 
+/// Characters of `text` that std::strtod reads (0: none). A result that underflows to a subnormal
+/// number or zero is still a number (std::stod would call it out of range).
+inline std::size_t parse_real(const std::string& text, double& x) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return 0;
+  char* end = nullptr;
+  x = std::strtod(text.c_str(), &end);
+  return static_cast<std::size_t>(end - text.c_str());
+}
+
 /// A validator for a real number in an interval; the message names the allowed range.
 inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_closed) {
   const std::string range = format_interval(lo, lo_closed, hi, hi_closed);
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         double x = 0.0;
-        std::size_t used = 0;
-        try {
-          x = std::stod(text, &used);
-        } catch (...) {
-          used = 0;
-        }
+        const std::size_t used = parse_real(text, x);
         if (used == 0 || used != text.size() || !std::isfinite(x))
           return "'" + text + "' is not a number; allowed range " + range;
         const bool ok_lo = lo_closed ? x >= lo : x > lo;
@@ -75,15 +84,15 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
       "integer in " + range);
 }
 
-/// The command-line flag of a field named in a validation message ("t_end: ..." -> "--t-end").
+/// The command-line flag of a field named in a validation message ("t_end: ..." -> "--t-end"):
+/// the parameter table's flag, or for the list fields of a sweep the flag of their element.
 inline std::string flag_of_field(const std::string& field) {
-  static const std::pair<const char*, const char*> renamed[] = {
-      {"dimension", "--dim"},           {"relax_collisions_per_particle", "--relax"},
-      {"contact_statistics", "--contacts"}, {"densities", "--density"},
-      {"restitutions", "--restitution"},  {"modes", "--randomize"},
-      {"t_end_in_tau0", "--t-end-tau0"},  {"randomize", "--randomize"}};
-  for (const auto& [name, flag] : renamed)
-    if (field == name) return flag;
+  if (const sim::ParameterInfo* info = sim::find_parameter(field)) return std::string(info->flag);
+  static const std::pair<const char*, const char*> lists[] = {
+      {"densities", "density"}, {"restitutions", "restitution"}, {"modes", "randomize"}};
+  for (const auto& [name, element] : lists)
+    if (field == name) return std::string(sim::find_parameter(element)->flag);
+  if (field == "t_end_in_tau0") return "--t-end-tau0";
   std::string flag = "--" + field;
   for (char& c : flag)
     if (c == '_') c = '-';
@@ -102,7 +111,8 @@ inline CLI::Validator unsigned_integer() {
   const std::string range = "[0, 18446744073709551615]";
   return CLI::Validator(
       [=](std::string& text) -> std::string {
-        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         if (!digits) return "'" + text + "' is not a non-negative integer; allowed range " + range;
         try {
           (void)std::stoull(text);
@@ -127,10 +137,25 @@ inline void require_writable_directory(const std::string& flag, const std::strin
   while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
   if (existing.empty()) existing = ".";
   if (!fs::is_directory(existing, ec))
-    throw UsageError(flag, "cannot create '" + directory + "': '" + existing.string() +
-                               "' is not a directory");
+    throw UsageError(
+        flag, "cannot create '" + directory + "': '" + existing.string() + "' is not a directory");
   if (::access(existing.c_str(), W_OK | X_OK) != 0)
     throw UsageError(flag, "cannot write into '" + existing.string() + "' (permission denied)");
+}
+
+/// require_writable_directory, then creates the directory and a real file in it (removed again):
+/// catches what permissions do not show (/proc, /sys, read-only or full file systems).
+inline void require_usable_directory(const std::string& flag, const std::string& directory) {
+  namespace fs = std::filesystem;
+  require_writable_directory(flag, directory);
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec) throw UsageError(flag, "cannot create '" + directory + "': " + ec.message());
+  try {
+    sim::probe_writable((fs::path(directory) / "probe").string());
+  } catch (const std::exception& e) {
+    throw UsageError(flag, e.what());
+  }
 }
 
 /// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (or,
@@ -141,10 +166,23 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
   if (path.empty()) throw UsageError(flag, "empty file name");
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw UsageError(flag, "'" + path + "' is a directory");
+  // The file is replaced by rename: only a regular file (not through a symlink) or a new name.
+  const auto status = fs::symlink_status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw UsageError(flag, "'" + path +
+                               "' exists and is not a regular file (a device, FIFO, socket or "
+                               "symlink); give a new name or a regular file");
   const fs::path parent = fs::path(path).parent_path();
   if (!create_parent && !parent.empty() && !fs::exists(parent, ec))
     throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
   require_writable_directory(flag, parent.string());
+  if (!create_parent || parent.empty() || fs::exists(parent, ec)) {
+    try {
+      sim::probe_writable(path);  // a real file, so /proc, /sys and over-long names fail now
+    } catch (const std::exception& e) {
+      throw UsageError(flag, e.what());
+    }
+  }
 }
 
 }  // namespace molchaos::app

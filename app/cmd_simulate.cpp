@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -13,38 +13,40 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/sim.hpp"
 #ifdef MOLCHAOS_HAVE_IO
 #include "molchaos/io/h5md_writer.hpp"
 #include "molchaos/io/xyz_writer.hpp"
 #endif
+#include "parameter_options.hpp"
 
 namespace molchaos::app {
 namespace {
 
 struct SimulateOptions {
   sim::Parameters parameters;
-  std::string randomize = "none";
   std::string out = "run.csv";
   std::string trajectory;  // H5MD file of the snapshots (empty: none)
   std::string xyz;         // extended XYZ file of the snapshots (empty: none)
   bool quiet = false;
 };
 
+// "dir/run.csv" -> "dir/run.snapshot<k>.csv": the extension of the file name only (a dot in a
+// directory name such as data.v2/ or ../ is not an extension).
 std::string snapshot_path(const std::string& out, std::size_t index) {
-  const auto dot = out.rfind('.');
-  const std::string stem = (dot == std::string::npos || dot == 0) ? out : out.substr(0, dot);
-  return stem + ".snapshot" + std::to_string(index) + ".csv";
+  const std::filesystem::path p(out);
+  std::string stem = p.filename().string();
+  const auto dot = stem.rfind('.');
+  if (dot != std::string::npos && dot != 0) stem.resize(dot);
+  return (p.parent_path() / (stem + ".snapshot" + std::to_string(index) + ".csv")).string();
 }
 
 void run_simulate(const SimulateOptions& options) {
-  sim::Parameters p = options.parameters;
-  const auto mode = sim::parse_randomization(options.randomize);
-  if (!mode)
-    throw UsageError("--randomize",
-                     "unknown value '" + options.randomize + "'; allowed: none, paper, flux");
-  p.randomize = *mode;
+  const sim::Parameters& p = options.parameters;
   require_writable_file("--out", options.out, /*create_parent=*/false);
+  for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
+    require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
   if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
   if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
   try {
@@ -69,17 +71,10 @@ void run_simulate(const SimulateOptions& options) {
   if (show_progress) std::fprintf(stderr, "\n");
 
   sim::write_csv_file(result, options.out);
-  for (std::size_t k = 0; k < result.snapshots.size(); ++k) {
-    const std::string path = snapshot_path(options.out, k);
-    const std::string temporary = path + ".tmp";
-    {
-      std::ofstream file(temporary);
+  for (std::size_t k = 0; k < result.snapshots.size(); ++k)
+    sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
       sim::write_snapshot_csv(result.snapshots[k], p.dimension, file);
-      if (!file) throw std::runtime_error("cannot write " + temporary);
-    }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0)
-      throw std::runtime_error("cannot rename " + temporary + " to " + path);
-  }
+    });
 #ifdef MOLCHAOS_HAVE_IO
   if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory);
   if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz);
@@ -100,53 +95,7 @@ void add_simulate_command(CLI::App& app) {
   sim::Parameters& p = options->parameters;
   CLI::App* cmd = app.add_subcommand(
       "simulate", "Event-driven MD of inelastic hard disks/spheres; writes the T(t) time series");
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  cmd->add_option("--dim", p.dimension, "Dimension d")
-      ->check(integer_in(2, 3))
-      ->capture_default_str();
-  cmd->add_option("--particles", p.particles, "Number of particles N")
-      ->check(integer_in(2, 100000000))
-      ->capture_default_str();
-  cmd->add_option(
-         "--density", p.density,
-         "Reduced density n = N sigma^d / V, in (0, close packing): (0, 1.1547) for d = 2, "
-         "(0, 1.41421) for d = 3")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--restitution", p.restitution, "Coefficient of restitution")
-      ->check(real_in(0, false, 1, true))
-      ->capture_default_str();
-  cmd->add_option("--randomize", options->randomize, "Velocity shuffle: none, paper, flux")
-      ->capture_default_str();
-  cmd->add_option("--seed", p.seed, "Random seed")
-      ->check(unsigned_integer())
-      ->capture_default_str();
-  cmd->add_option("--t-end", p.t_end, "Physical duration of the cooling run")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--relax", p.relax_collisions_per_particle,
-                  "Elastic collisions per particle before t = 0")
-      ->check(real_in(0, true, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--tc", p.tc, "TC model duration (0 = off)")
-      ->check(real_in(0, true, inf, false))
-      ->capture_default_str();
-  cmd->add_option("--samples-per-decade", p.samples_per_decade, "Samples per decade of time")
-      ->check(integer_in(1, 10000))
-      ->capture_default_str();
-  cmd->add_option("--t-first-sample", p.t_first_sample, "First log-spaced sample time")
-      ->check(real_in(0, false, inf, false))
-      ->capture_default_str();
-  cmd->add_flag("--contacts", p.contact_statistics, "Record contact statistics of collisions");
-  cmd->add_option("--snapshot-times", p.snapshot_times,
-                  "Times of position/velocity snapshots (written next to --out)")
-      ->check(real_in(0, true, inf, false));
-  cmd->add_option("--max-collisions", p.max_collisions, "Stop after this many collisions (0 = no)")
-      ->check(unsigned_integer())
-      ->capture_default_str();
-  cmd->add_option("--min-temperature", p.min_temperature, "Stop when T/T0 falls below (0 = no)")
-      ->check(real_in(0, true, 1, false))
-      ->capture_default_str();
+  add_parameter_options(cmd, p);  // every row of the parameter table
   cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
 #ifdef MOLCHAOS_HAVE_IO
   cmd->add_option("--trajectory", options->trajectory,

@@ -14,6 +14,7 @@
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/version.hpp"
+#include "parameter_options.hpp"
 #include "sweep_runner.hpp"
 
 namespace molchaos::app {
@@ -31,9 +32,7 @@ struct SweepCliOptions {
 void run_sweep_command(SweepCliOptions& o) {
   o.spec.modes.clear();
   for (const auto& m : o.modes) {
-    auto mode = sim::parse_randomization(m);
-    if (!mode) throw UsageError("--randomize", "value '" + m + "' is not one of none, paper, flux");
-    o.spec.modes.push_back(*mode);
+    o.spec.modes.push_back(*sim::parse_randomization(m));  // checked by the option
   }
   auto reject_repeats = [](const std::string& flag, auto values) {
     std::sort(values.begin(), values.end());
@@ -52,7 +51,7 @@ void run_sweep_command(SweepCliOptions& o) {
                        fmt::format("value {} is at or above close packing {:.6f} for --dim {}", n,
                                    sim::close_packing_density(o.spec.dimension), o.spec.dimension));
   if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
-  if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
+  if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   try {
     validation::validate(o.spec);
   } catch (const std::invalid_argument& e) {
@@ -79,11 +78,14 @@ void run_sweep_command(SweepCliOptions& o) {
           s.restitution, s.mode, p.collision_ratio.value, p.collision_ratio.error, s.runs);
       continue;
     }
+    // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
     const double se = std::hypot(s.A.error, p.A_theory.error);
-    std::cout << fmt::format("{:>8} {:>6} {:>6} {:>12.5f} {:>10.5f} {:>12.5f} {:>9.2f} {:>5}\n",
-                             s.density, s.restitution, s.mode, s.A.value, s.A.error,
-                             p.A_theory.value, se > 0 ? (s.A.value - p.A_theory.value) / se : 0.0,
-                             s.runs);
+    const bool error_bar = s.runs >= 2 && se > 0;
+    std::cout << fmt::format(
+        "{:>8} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density, s.restitution,
+        s.mode, s.A.value, error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
+        error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
+        error_bar ? "" : "  (no error bar: fewer than 2 runs)");
     for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
   }
   if (!o.out.empty()) {
@@ -101,21 +103,11 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepCliOptions>();
   CLI::App* cmd =
       app.add_subcommand("sweep", "Ensemble of runs over state points; A ± SE vs theory");
-  cmd->add_option("--dim", o->spec.dimension, "dimension d")
-      ->check(integer_in(2, 3))
-      ->capture_default_str();
-  cmd->add_option("--particles", o->spec.particles, "particles N")
-      ->check(integer_in(2, 100000000))
-      ->capture_default_str();
-  cmd->add_option("--density", o->spec.densities, "reduced densities (comma separated)")
-      ->delimiter(',')
-      ->check(real_in(0.0, false, std::numeric_limits<double>::infinity(), false));
-  cmd->add_option("--restitution", o->spec.restitutions,
-                  "restitution coefficients (comma separated)")
-      ->delimiter(',')
-      ->check(real_in(0.0, false, 1.0, true));
-  cmd->add_option("--randomize", o->modes, "modes: none, paper, flux (comma separated)")
-      ->delimiter(',');
+  add_parameter_option(cmd, "dimension", o->spec.dimension);
+  add_parameter_option(cmd, "particles", o->spec.particles);
+  add_parameter_list_option(cmd, "density", o->spec.densities);
+  add_parameter_list_option(cmd, "restitution", o->spec.restitutions);
+  add_parameter_list_option(cmd, "randomize", o->modes);
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
       ->check(integer_in(1, 100000))
       ->capture_default_str();
@@ -128,13 +120,8 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--t-end-elastic", o->spec.t_end_elastic, "run length at restitution 1")
       ->check(real_in(0.0, false, 1e9, true))
       ->capture_default_str();
-  cmd->add_option("--samples-per-decade", o->spec.samples_per_decade, "time samples per decade")
-      ->check(integer_in(1, 1000))
-      ->capture_default_str();
-  cmd->add_option("--relax", o->spec.relax_collisions_per_particle,
-                  "elastic relaxation, collisions per particle")
-      ->check(real_in(0.0, true, 1e6, true))
-      ->capture_default_str();
+  add_parameter_option(cmd, "samples_per_decade", o->spec.samples_per_decade);
+  add_parameter_option(cmd, "relax_collisions_per_particle", o->spec.relax_collisions_per_particle);
   cmd->add_option("--cache", o->cache, "cache directory ('' for none)")->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024))

@@ -26,6 +26,7 @@
 #include "molchaos/theory/sonine_hcs.hpp"
 #include "molchaos/version.hpp"
 #include "theory_hydrodynamics_output.hpp"
+#include "parameter_options.hpp"
 
 namespace molchaos::app {
 namespace {
@@ -353,15 +354,9 @@ void add_theory_command(CLI::App& app) {
   auto options = std::make_shared<TheoryOptions>();
   CLI::App* cmd = app.add_subcommand(
       "theory", "Kinetic-theory prediction (g2, a2, μ2, τ0, A) and the paper's coefficients");
-  cmd->add_option("--dim", options->dimension, "dimension d")
-      ->check(integer_in(2, 3))
-      ->capture_default_str();
-  cmd->add_option("--restitution", options->restitution, "coefficient of restitution ε")
-      ->check(real_in(0.0, false, 1.0, true))
-      ->capture_default_str();
-  cmd->add_option("--density", options->density, "reduced density n = Nσ^d/V")
-      ->check(real_in(0.0, false, std::numeric_limits<double>::infinity(), false))
-      ->capture_default_str();
+  add_parameter_option(cmd, "dimension", options->dimension);
+  add_parameter_option(cmd, "restitution", options->restitution);
+  add_parameter_option(cmd, "density", options->density);
   cmd->add_option("--b", options->correlation_b,
                   "velocity-correlation coefficient b (range: where f2 and μ2 stay positive)")
       ->check(real_in(-std::numeric_limits<double>::infinity(), false,

@@ -72,11 +72,6 @@ class Backoff {
   std::chrono::microseconds current_ = k_shortest;
 };
 
-std::string cache_path(const sim::Parameters& p, const SweepOptions& o) {
-  return (std::filesystem::path(o.cache_directory) / (validation::cache_key(p, o.version) + ".csv"))
-      .string();
-}
-
 // Runs not yet started. Rank 0's compute thread takes the runs only it may do first (those with
 // snapshots, which the CSV text does not carry), then competes with the workers for the rest.
 class WorkQueue {
@@ -179,10 +174,7 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
           validation::canonical_parameters(runs[i], ""))
         throw std::runtime_error(
             fmt::format("rank {} ran other parameters than were sent", source));
-      if (!o.cache_directory.empty()) {
-        std::filesystem::create_directories(o.cache_directory);
-        sim::write_csv_file(r, cache_path(runs[i], o));
-      }
+      validation::store_cached(r, o);
       out[i].result = std::move(r);
       out[i].ok = true;
     } catch (const std::exception& e) {

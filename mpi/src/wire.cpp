@@ -5,6 +5,9 @@
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
+#include <variant>
+
+#include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::mpi {
 namespace {
@@ -61,56 +64,57 @@ class Reader {
 
 }  // namespace
 
+// Every parameter in table order, in its own type; a list is its length then its elements.
 std::string encode(const JobMessage& job) {
-  const sim::Parameters& p = job.parameters;
   Writer w;
   w.put(job.index);
-  w.put(p.dimension);
-  w.put(p.particles);
-  w.put(p.density);
-  w.put(p.restitution);
-  w.put(static_cast<std::int32_t>(p.randomize));
-  w.put(p.seed);
-  w.put(p.t_end);
-  w.put(p.relax_collisions_per_particle);
-  w.put(p.tc);
-  w.put(p.samples_per_decade);
-  w.put(p.t_first_sample);
-  w.put(static_cast<std::uint8_t>(p.contact_statistics ? 1 : 0));
-  w.put<std::uint64_t>(p.snapshot_times.size());
-  for (double t : p.snapshot_times) w.put(t);
-  w.put(p.max_collisions);
-  w.put(p.min_temperature);
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    std::visit(
+        [&](auto member) {
+          const auto& value = job.parameters.*member;
+          using T = std::remove_cvref_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            w.put(static_cast<std::uint8_t>(value ? 1 : 0));
+          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
+            w.put(static_cast<std::int32_t>(value));
+          } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+            w.put<std::uint64_t>(value.size());
+            for (double x : value) w.put(x);
+          } else {
+            w.put(value);
+          }
+        },
+        info.field);
   return w.take();
 }
 
 JobMessage decode_job(std::string_view bytes) {
   Reader r(bytes);
   JobMessage job;
-  sim::Parameters& p = job.parameters;
   job.index = r.get<std::uint64_t>();
-  p.dimension = r.get<int>();
-  p.particles = r.get<std::int64_t>();
-  p.density = r.get<double>();
-  p.restitution = r.get<double>();
-  const auto mode = r.get<std::int32_t>();
-  if (mode < 0 || mode > static_cast<std::int32_t>(sim::Randomization::flux))
-    throw std::runtime_error("MPI message: unknown randomization mode");
-  p.randomize = static_cast<sim::Randomization>(mode);
-  p.seed = r.get<std::uint64_t>();
-  p.t_end = r.get<double>();
-  p.relax_collisions_per_particle = r.get<double>();
-  p.tc = r.get<double>();
-  p.samples_per_decade = r.get<int>();
-  p.t_first_sample = r.get<double>();
-  p.contact_statistics = r.get<std::uint8_t>() != 0;
-  const auto snapshots = r.get<std::uint64_t>();
-  if (snapshots > bytes.size() / sizeof(double))
-    throw std::runtime_error("MPI message: bad snapshot count");
-  p.snapshot_times.resize(snapshots);
-  for (double& t : p.snapshot_times) t = r.get<double>();
-  p.max_collisions = r.get<std::uint64_t>();
-  p.min_temperature = r.get<double>();
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    std::visit(
+        [&](auto member) {
+          auto& value = job.parameters.*member;
+          using T = std::remove_cvref_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            value = r.get<std::uint8_t>() != 0;
+          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
+            const auto mode = r.get<std::int32_t>();
+            if (mode < 0 || mode > static_cast<std::int32_t>(sim::Randomization::flux))
+              throw std::runtime_error("MPI message: unknown randomization mode");
+            value = static_cast<sim::Randomization>(mode);
+          } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+            const auto count = r.get<std::uint64_t>();
+            if (count > bytes.size() / sizeof(double))
+              throw std::runtime_error("MPI message: bad length of " + std::string(info.name));
+            value.resize(count);
+            for (double& x : value) x = r.get<double>();
+          } else {
+            value = r.get<T>();
+          }
+        },
+        info.field);
   r.expect_end();
   return job;
 }

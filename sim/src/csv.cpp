@@ -1,8 +1,6 @@
 // The result CSV: writer (atomic file replacement) and reader (header back into Parameters).
 #include "molchaos/sim/csv.hpp"
 
-#include <unistd.h>
-
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +9,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
+
+#include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
 namespace {
@@ -61,29 +62,11 @@ std::vector<std::string> split(const std::string& line, char sep) {
 
 void write_csv(const RunResult& r, std::ostream& out) {
   const Parameters& p = r.parameters;
-  std::string snapshots;
-  for (double t : p.snapshot_times) {
-    if (!snapshots.empty()) snapshots += ' ';
-    snapshots += num(t);
-  }
   out << "# molchaos simulate: event-driven MD of inelastic hard spheres (sigma = m = 1, T0 = 1)\n"
-      << "# version = " << r.version << "\n"
-      << "# dimension = " << p.dimension << "\n"
-      << "# particles = " << p.particles << "\n"
-      << "# density = " << num(p.density) << "\n"
-      << "# restitution = " << num(p.restitution) << "\n"
-      << "# randomize = " << to_string(p.randomize) << "\n"
-      << "# seed = " << p.seed << "\n"
-      << "# t_end = " << num(p.t_end) << "\n"
-      << "# relax_collisions_per_particle = " << num(p.relax_collisions_per_particle) << "\n"
-      << "# tc = " << num(p.tc) << "\n"
-      << "# samples_per_decade = " << p.samples_per_decade << "\n"
-      << "# t_first_sample = " << num(p.t_first_sample) << "\n"
-      << "# contact_statistics = " << (p.contact_statistics ? "true" : "false") << "\n"
-      << "# snapshot_times = " << snapshots << "\n"
-      << "# max_collisions = " << p.max_collisions << "\n"
-      << "# min_temperature = " << num(p.min_temperature) << "\n"
-      << "# stop_reason = " << stop_message(r) << "\n"
+      << "# version = " << r.version << "\n";
+  for (const ParameterInfo& info : parameter_table())
+    out << "# " << info.name << " = " << format_value(p, info) << "\n";
+  out << "# stop_reason = " << stop_message(r) << "\n"
       << "# collisions = " << r.collisions << "\n"
       << "# events = " << r.events << "\n"
       << "# rows = " << r.samples.size() << "\n"
@@ -101,25 +84,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
 }
 
 void write_csv_file(const RunResult& result, const std::string& path) {
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + temporary);
-    write_csv(result, out);
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("write failed: " + temporary);
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
-  }
+  write_file_atomically(path, [&](std::ostream& out) { write_csv(result, out); });
 }
 
 RunResult read_csv(std::istream& in) {
@@ -146,28 +111,13 @@ RunResult read_csv(std::istream& in) {
   };
   RunResult r;
   Parameters& p = r.parameters;
-  p.dimension = static_cast<int>(parse_uint(field("dimension"), "dimension"));
-  p.particles = static_cast<std::int64_t>(parse_uint(field("particles"), "particles"));
-  p.density = parse_double(field("density"), "density");
-  p.restitution = parse_double(field("restitution"), "restitution");
-  const auto mode = parse_randomization(field("randomize"));
-  if (!mode) corrupt("randomize '" + field("randomize") + "'");
-  p.randomize = *mode;
-  p.seed = parse_uint(field("seed"), "seed");
-  p.t_end = parse_double(field("t_end"), "t_end");
-  p.relax_collisions_per_particle =
-      parse_double(field("relax_collisions_per_particle"), "relax_collisions_per_particle");
-  p.tc = parse_double(field("tc"), "tc");
-  p.samples_per_decade =
-      static_cast<int>(parse_uint(field("samples_per_decade"), "samples_per_decade"));
-  p.t_first_sample = parse_double(field("t_first_sample"), "t_first_sample");
-  const std::string& contacts = field("contact_statistics");
-  if (contacts != "true" && contacts != "false") corrupt("contact_statistics '" + contacts + "'");
-  p.contact_statistics = contacts == "true";
-  for (const auto& t : split(field("snapshot_times"), ' '))
-    if (!t.empty()) p.snapshot_times.push_back(parse_double(t, "snapshot_times"));
-  p.max_collisions = parse_uint(field("max_collisions"), "max_collisions");
-  p.min_temperature = parse_double(field("min_temperature"), "min_temperature");
+  for (const ParameterInfo& info : parameter_table()) {
+    try {
+      parse_value(p, info, field(std::string(info.name)));
+    } catch (const std::invalid_argument& e) {
+      corrupt(e.what());
+    }
+  }
   r.version = field("version");
   const auto stop = parse_stop_reason(field("stop_reason"));
   if (!stop) corrupt("stop_reason '" + field("stop_reason") + "'");

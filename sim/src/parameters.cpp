@@ -1,19 +1,16 @@
-// Validation of Parameters and the names of the randomization modes.
+// Validation of Parameters (each field's range from the parameter table, then the bounds that join
+// fields) and the names of the randomization modes.
 #include "molchaos/sim/parameters.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
 namespace {
 
-std::string number(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
+std::string number(double x) { return message_number(x); }
 
 [[noreturn]] void out_of_range(const std::string& field, const std::string& value,
                                const std::string& range) {
@@ -51,36 +48,24 @@ double box_side(const Parameters& p) {
 }
 
 void validate(const Parameters& p) {
-  if (p.dimension != 2 && p.dimension != 3)
-    out_of_range("dimension", std::to_string(p.dimension), "{2, 3}");
-  if (p.particles < 2 || p.particles > 100'000'000)
-    out_of_range("particles", std::to_string(p.particles), "[2, 100000000]");
+  // Each field against its own range (the table), then the bounds that join several fields.
+  for (const ParameterInfo& info : parameter_table()) check_range(p, info);
   if (p.randomize != Randomization::none && p.particles < 4)
     out_of_range("particles", std::to_string(p.particles),
                  "[4, 100000000] with randomize = " + std::string(to_string(p.randomize)) +
                      " (the shuffle needs two particles besides the colliding pair)");
   const double n_max = close_packing_density(p.dimension);
-  if (!(p.density > 0 && p.density < n_max))
+  if (!(p.density < n_max))
     out_of_range("density", number(p.density),
                  "(0, " + number(n_max) + ") (close packing for dimension " +
                      std::to_string(p.dimension) + ")");
-  if (!(p.restitution > 0 && p.restitution <= 1))
-    out_of_range("restitution", number(p.restitution), "(0, 1]");
-  if (!(p.t_end > 0 && std::isfinite(p.t_end))) out_of_range("t_end", number(p.t_end), "(0, inf)");
-  if (!(p.relax_collisions_per_particle >= 0 && std::isfinite(p.relax_collisions_per_particle)))
-    out_of_range("relax_collisions_per_particle", number(p.relax_collisions_per_particle),
-                 "[0, inf)");
-  if (!(p.tc >= 0 && std::isfinite(p.tc))) out_of_range("tc", number(p.tc), "[0, inf)");
-  if (p.samples_per_decade < 1 || p.samples_per_decade > 10000)
-    out_of_range("samples_per_decade", std::to_string(p.samples_per_decade), "[1, 10000]");
-  if (!(p.t_first_sample > 0 && std::isfinite(p.t_first_sample)))
-    out_of_range("t_first_sample", number(p.t_first_sample), "(0, inf)");
   for (double t : p.snapshot_times)
-    if (!(t >= 0 && t <= p.t_end))
+    if (!(t <= p.t_end))
       out_of_range("snapshot_times", number(t), "[0, t_end] = [0, " + number(p.t_end) + "]");
-  if (!(p.min_temperature >= 0 && p.min_temperature < 1))
-    out_of_range("min_temperature", number(p.min_temperature), "[0, 1)");
   const double side = box_side(p);
+  if (!std::isfinite(side))
+    out_of_range("density", number(p.density),
+                 "(0, " + number(n_max) + ") with a finite box side (N / n)^(1/d)");
   // The cell lists need at least 4 cells of width >= sigma per side: with 3, two particles in
   // neighbouring cells can be more than half a box apart and the minimum image flips while they
   // approach, so a collision is missed (found with two disks in a box of side 10).

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "molchaos/sim/run.hpp"
+#include "molchaos/theory/cooling.hpp"
 
 namespace molchaos::validation {
 
@@ -61,7 +62,7 @@ double collision_frequency_ratio(const sim::RunResult& run) {
   const double T = run.samples.empty() ? 1.0 : run.samples.back().temperature;
   const double omega =
       2.0 * static_cast<double>(run.collisions) / (static_cast<double>(p.particles) * t);
-  return omega / sim::enskog_collision_frequency(p.dimension, p.density, T);
+  return omega / theory::enskog_collision_frequency(p.dimension, p.density, T);
 }
 
 LinearFit fit_line(const std::vector<double>& x, const std::vector<Measurement>& y) {

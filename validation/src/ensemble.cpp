@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/theory/cooling.hpp"
 
 namespace molchaos::validation {
@@ -111,10 +112,7 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
 
 void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& points,
                        const std::string& version, const std::string& path) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
+  sim::write_file_atomically(path, [&](std::ostream& out) {
     out << "# molchaos sweep summary (sigma = m = k_B = 1, T0 = 1)\n";
     out << "# version = " << version << "\n";
     out << fmt::format("# dimension = {}\n# particles = {}\n# seeds = {}\n# base_seed = {}\n",
@@ -135,9 +133,7 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
           m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
           p.collision_ratio.value, p.collision_ratio.error);
     }
-    if (!out.flush()) throw std::runtime_error("write failed: " + tmp);
-  }
-  std::filesystem::rename(tmp, path);
+  });
 }
 
 }  // namespace molchaos::validation

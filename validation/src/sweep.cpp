@@ -10,11 +10,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/csv.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/validation/sweep_reporter.hpp"
 
@@ -28,14 +32,9 @@ std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index) {
 }
 
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version) {
-  std::string s = fmt::format(
-      "version={};dimension={};particles={};density={:.17g};restitution={:.17g};randomize={};"
-      "seed={};t_end={:.17g};relax={:.17g};tc={:.17g};samples_per_decade={};t_first={:.17g};"
-      "contacts={};max_collisions={};min_temperature={:.17g};snapshots=",
-      version, p.dimension, p.particles, p.density, p.restitution, sim::to_string(p.randomize),
-      p.seed, p.t_end, p.relax_collisions_per_particle, p.tc, p.samples_per_decade,
-      p.t_first_sample, p.contact_statistics ? 1 : 0, p.max_collisions, p.min_temperature);
-  for (double t : p.snapshot_times) s += fmt::format("{:.17g},", t);
+  std::string s = "version=" + version + ";";
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    s += std::string(info.name) + "=" + sim::format_value(p, info) + ";";
   return s;
 }
 
@@ -48,14 +47,52 @@ std::string cache_key(const sim::Parameters& p, const std::string& version) {
   return fmt::format("{:016x}", h);
 }
 
-namespace {
-
 std::string cache_path(const sim::Parameters& p, const SweepOptions& o) {
   return (std::filesystem::path(o.cache_directory) / (cache_key(p, o.version) + ".csv")).string();
 }
 
+namespace {
+
 bool same_parameters(const sim::Parameters& a, const sim::Parameters& b) {
   return canonical_parameters(a, "") == canonical_parameters(b, "");
+}
+
+std::string fnv1a64(std::string_view text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  return fmt::format("{:016x}", h);
+}
+
+// A cache entry is two lines, the key it was stored under and the FNV-1a checksum of the rest,
+// then the run's CSV exactly as write_csv writes it. Any change to a byte of the CSV (a digit of
+// T, a header, a row dropped with `rows` adjusted) changes the checksum: FNV-1a maps two texts
+// differing in one byte to different hashes, and any other change survives only with chance
+// 2^-64.
+constexpr std::string_view k_key_line = "# cache_key = ";
+constexpr std::string_view k_checksum_line = "# checksum = fnv1a64:";
+
+// The CSV text of a verified entry; throws std::runtime_error saying what does not match.
+std::string verified_content(const std::string& path, const std::string& key) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot open");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto end1 = text.find('\n');
+  const auto end2 = end1 == std::string::npos ? end1 : text.find('\n', end1 + 1);
+  if (end2 == std::string::npos || text.compare(0, k_key_line.size(), k_key_line) != 0 ||
+      text.compare(end1 + 1, k_checksum_line.size(), k_checksum_line) != 0)
+    throw std::runtime_error("no cache_key/checksum header");
+  const std::string stored_key = text.substr(k_key_line.size(), end1 - k_key_line.size());
+  if (stored_key != key)
+    throw std::runtime_error("stored under key " + stored_key + ", expected " + key);
+  const auto start = end1 + 1 + k_checksum_line.size();
+  const std::string stored_sum = text.substr(start, end2 - start);
+  std::string content = text.substr(end2 + 1);
+  if (fnv1a64(content) != stored_sum)
+    throw std::runtime_error("checksum mismatch (content changed since it was stored)");
+  return content;
 }
 
 }  // namespace
@@ -64,43 +101,45 @@ bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult
   if (o.cache_directory.empty()) return false;
   const std::string path = cache_path(p, o);
   if (!std::filesystem::exists(path)) return false;
+  // Snapshots are not stored in the run file; a run that asked for them is recomputed.
+  if (!p.snapshot_times.empty()) return false;
   try {
-    sim::RunResult r = sim::read_csv_file(path);
-    // Snapshots are not stored in the run file; a run that asked for them is recomputed.
-    // The version is part of the key; the parameters are compared to rule out a hash collision.
-    if (!same_parameters(r.parameters, p) || !p.snapshot_times.empty()) return false;
+    std::istringstream content(verified_content(path, cache_key(p, o.version)));
+    sim::RunResult r = sim::read_csv(content);
+    if (!same_parameters(r.parameters, p))
+      throw std::runtime_error("holds other parameters than its key says");
     out = std::move(r);
     return true;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "[%s] cache entry %s is corrupt (%s); recomputing\n", o.label.c_str(),
-                 path.c_str(), e.what());
+    std::fprintf(stderr, "[%s] warning: cache entry %s is corrupt (%s); recomputing\n",
+                 o.label.c_str(), path.c_str(), e.what());
     return false;
   }
+}
+
+void store_cached(const sim::RunResult& r, const SweepOptions& o) {
+  if (o.cache_directory.empty()) return;
+  std::filesystem::create_directories(o.cache_directory);
+  std::ostringstream csv;
+  sim::write_csv(r, csv);
+  const std::string content = csv.str();
+  sim::write_file_atomically(cache_path(r.parameters, o), [&](std::ostream& out) {
+    out << k_key_line << cache_key(r.parameters, o.version) << '\n'
+        << k_checksum_line << fnv1a64(content) << '\n'
+        << content;
+  });
 }
 
 sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& o) {
   sim::RunResult r = sim::run(p);
   if (r.stop_reason == sim::StopReason::collapse)
     throw std::runtime_error("run stopped: " + sim::stop_message(r));
-  if (!o.cache_directory.empty()) {
-    std::filesystem::create_directories(o.cache_directory);
-    sim::write_csv_file(r, cache_path(p, o));
-  }
+  store_cached(r, o);
   return r;
 }
 
 void remove_stale_temporaries(const std::string& cache_directory) {
-  if (cache_directory.empty() || !std::filesystem::is_directory(cache_directory)) return;
-  for (const auto& entry : std::filesystem::directory_iterator(cache_directory)) {
-    // "<key>.csv.tmp.<pid>": left behind only if the writing process was killed mid-write.
-    const std::string name = entry.path().filename().string();
-    const auto pos = name.find(".tmp.");
-    if (pos == std::string::npos) continue;
-    const long pid = std::strtol(name.c_str() + pos + 5, nullptr, 10);
-    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) == 0) continue;  // writer still alive
-    std::error_code ec;
-    std::filesystem::remove(entry.path(), ec);
-  }
+  sim::remove_stale_temporaries(cache_directory);
 }
 
 std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs, const SweepOptions& o) {

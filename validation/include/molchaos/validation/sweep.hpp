@@ -16,7 +16,8 @@ namespace molchaos::validation {
 /// from a thread, rank or clock, so a run's result does not depend on who ran it.
 std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index);
 
-/// Canonical text of every parameter (round-trip precision) plus the code version.
+/// Canonical text of the code version and every parameter of the table, "name=value;" with
+/// values as the CSV header prints them (shortest round-trip decimals).
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version);
 
 /// Cache file name: 16 hex digits of a 64-bit FNV-1a hash of canonical_parameters().
@@ -52,7 +53,8 @@ struct RunOutcome {
 std::vector<RunOutcome> run_sweep(const std::vector<sim::Parameters>& runs,
                                   const SweepOptions& options);
 
-/// Deletes temporary files of writers that no longer exist (a sweep killed mid-write).
+/// Deletes this suite's temporary files of writers that no longer exist (a sweep killed
+/// mid-write); see sim::remove_stale_temporaries for the pattern and the age rule.
 void remove_stale_temporaries(const std::string& cache_directory);
 
 /// The local thread pool behind run_sweep (run_sweep delegates to options.runner when set).
@@ -61,6 +63,11 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
 
 /// Loads a cached run if a valid entry exists (used by run_sweep and by the MPI driver).
 bool load_cached(const sim::Parameters& p, const SweepOptions& options, sim::RunResult& out);
+/// The one place a run's cache file lives: <cache_directory>/<cache_key>.csv.
+std::string cache_path(const sim::Parameters& p, const SweepOptions& options);
+/// Stores a run under its key with a checksum of its content (atomically); no-op without cache.
+/// load_cached reports an entry whose key or checksum does not match and recomputes it.
+void store_cached(const sim::RunResult& result, const SweepOptions& options);
 /// Runs one parameter set and stores it in the cache; throws on failure.
 sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& options);
 

@@ -1,0 +1,107 @@
+// Command-line options made from the parameter table: each row gives its flag, its check (the
+// row's range), its help line and its default, so every subcommand spells a parameter the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "molchaos/sim/parameter_table.hpp"
+
+namespace molchaos::app {
+
+/// Accepts the names of the randomization modes.
+inline CLI::Validator randomization_name() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (sim::parse_randomization(text)) return {};
+        return "unknown value '" + text + "'; allowed: none, paper, flux";
+      },
+      "one of none, paper, flux");
+}
+
+/// The check of one value (or one list element) of a row.
+inline CLI::Validator parameter_check(const sim::ParameterInfo& info) {
+  const sim::ParameterRange& r = info.range;
+  return std::visit(
+      [&](auto member) -> CLI::Validator {
+        using T = std::remove_cvref_t<decltype(sim::Parameters{}.*member)>;
+        if constexpr (std::is_same_v<T, std::uint64_t>)
+          return unsigned_integer();
+        else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::int64_t>)
+          return integer_in(static_cast<long long>(r.lo), static_cast<long long>(r.hi));
+        else if constexpr (std::is_same_v<T, sim::Randomization>)
+          return randomization_name();
+        else
+          return real_in(r.lo, r.lo_closed, r.hi, r.hi_closed);  // double, list of doubles
+      },
+      info.field);
+}
+
+inline std::string parameter_help(const sim::ParameterInfo& info) {
+  std::string help(info.doc);
+  if (!info.unit.empty()) help += " [" + std::string(info.unit) + "]";
+  return help;
+}
+
+inline const sim::ParameterInfo& parameter_row(std::string_view name) {
+  const sim::ParameterInfo* info = sim::find_parameter(name);
+  if (!info) throw std::logic_error("no parameter named " + std::string(name));
+  return *info;
+}
+
+/// Every row of the table as an option of `cmd` writing into `p` (whose values are the defaults).
+inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    const std::string flag(info.flag);
+    const std::string help = parameter_help(info);
+    std::visit(
+        [&](auto member) {
+          auto& target = p.*member;
+          using T = std::remove_cvref_t<decltype(target)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            cmd->add_flag(flag, target, help);
+          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
+            cmd->add_option_function<std::string>(
+                   flag,
+                   [&target](const std::string& text) { target = *sim::parse_randomization(text); },
+                   help)
+                ->check(parameter_check(info))
+                ->default_str(std::string(sim::to_string(target)));
+          } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+            cmd->add_option(flag, target, help)->check(parameter_check(info));
+          } else {
+            cmd->add_option(flag, target, help)
+                ->check(parameter_check(info))
+                ->capture_default_str();
+          }
+        },
+        info.field);
+  }
+}
+
+/// The option of row `name` bound to a value of another struct (a sweep's specification).
+template <class T>
+CLI::Option* add_parameter_option(CLI::App* cmd, std::string_view name, T& target) {
+  const sim::ParameterInfo& info = parameter_row(name);
+  return cmd->add_option(std::string(info.flag), target, parameter_help(info))
+      ->check(parameter_check(info))
+      ->capture_default_str();
+}
+
+/// The option of row `name` taking a comma-separated list (a sweep over that parameter).
+template <class T>
+CLI::Option* add_parameter_list_option(CLI::App* cmd, std::string_view name,
+                                       std::vector<T>& target) {
+  const sim::ParameterInfo& info = parameter_row(name);
+  return cmd
+      ->add_option(std::string(info.flag), target, parameter_help(info) + " (comma separated)")
+      ->delimiter(',')
+      ->check(parameter_check(info));
+}
+
+}  // namespace molchaos::app

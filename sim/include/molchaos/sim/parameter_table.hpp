@@ -1,0 +1,152 @@
+// The one declaration of every run parameter: field, name, CLI flag, allowed range, unit and one
+// line of documentation. Validation, the CLI of every subcommand, the CSV header (write and read),
+// the cache key and the MPI wire format all walk this table; adding a parameter is one row here.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "molchaos/sim/parameters.hpp"
+
+namespace molchaos::sim {
+
+/// The field of Parameters a row describes; the alternative is the field's C++ type.
+using ParameterField =
+    std::variant<int Parameters::*, std::int64_t Parameters::*, std::uint64_t Parameters::*,
+                 double Parameters::*, bool Parameters::*, Randomization Parameters::*,
+                 std::vector<double> Parameters::*>;
+
+/// Allowed values of a number, or of each element of a list (static part only: bounds that depend
+/// on other fields, such as close packing or snapshot_times <= t_end, are checked by validate()).
+struct ParameterRange {
+  double lo = -std::numeric_limits<double>::infinity();
+  bool lo_closed = false;
+  double hi = std::numeric_limits<double>::infinity();
+  bool hi_closed = false;
+};
+
+struct ParameterInfo {
+  std::string_view name;  ///< field name: CSV header key, cache key, validation messages
+  std::string_view flag;  ///< command-line flag
+  ParameterField field;
+  ParameterRange range;
+  std::string_view unit;  ///< "" for pure numbers and choices
+  std::string_view doc;   ///< one line of help text
+};
+
+namespace detail {
+constexpr double k_inf = std::numeric_limits<double>::infinity();
+}  // namespace detail
+
+/// Every field of Parameters, in the order of the CSV header and the MPI message. Defaults are
+/// the member initializers of Parameters (default_parameters()).
+inline const std::array<ParameterInfo, 15>& parameter_table() {
+  using detail::k_inf;
+  using P = Parameters;
+  static const std::array<ParameterInfo, 15> table{{
+      {"dimension", "--dim", &P::dimension, {2, true, 3, true}, "", "Dimension d"},
+      {"particles",
+       "--particles",
+       &P::particles,
+       {2, true, 1e8, true},
+       "",
+       "Number of particles N"},
+      {"density",
+       "--density",
+       &P::density,
+       {0, false, k_inf, false},
+       "sigma^-d",
+       "Reduced density n = N sigma^d / V, below close packing (1.1547 for d = 2, 1.41421 for "
+       "d = 3)"},
+      {"restitution",
+       "--restitution",
+       &P::restitution,
+       {0, false, 1, true},
+       "",
+       "Coefficient of restitution"},
+      {"randomize", "--randomize", &P::randomize, {}, "", "Velocity shuffle: none, paper, flux"},
+      {"seed", "--seed", &P::seed, {0, true, 18446744073709551615.0, true}, "", "Random seed"},
+      {"t_end",
+       "--t-end",
+       &P::t_end,
+       {0, false, k_inf, false},
+       "sigma sqrt(m/T0)",
+       "Physical duration of the cooling run"},
+      {"relax_collisions_per_particle",
+       "--relax",
+       &P::relax_collisions_per_particle,
+       {0, true, k_inf, false},
+       "collisions per particle",
+       "Elastic collisions per particle before t = 0"},
+      {"tc",
+       "--tc",
+       &P::tc,
+       {0, true, k_inf, false},
+       "sigma sqrt(m/T0)",
+       "TC model duration (0 = off)"},
+      {"samples_per_decade",
+       "--samples-per-decade",
+       &P::samples_per_decade,
+       {1, true, 10000, true},
+       "",
+       "Samples per decade of time"},
+      {"t_first_sample",
+       "--t-first-sample",
+       &P::t_first_sample,
+       {0, false, k_inf, false},
+       "sigma sqrt(m/T0)",
+       "First log-spaced sample time"},
+      {"contact_statistics",
+       "--contacts",
+       &P::contact_statistics,
+       {},
+       "",
+       "Record contact statistics of collisions"},
+      {"snapshot_times",
+       "--snapshot-times",
+       &P::snapshot_times,
+       {0, true, k_inf, false},
+       "sigma sqrt(m/T0)",
+       "Times of position/velocity snapshots, in [0, t_end]"},
+      {"max_collisions",
+       "--max-collisions",
+       &P::max_collisions,
+       {0, true, 18446744073709551615.0, true},
+       "",
+       "Stop after this many collisions (0 = no)"},
+      {"min_temperature",
+       "--min-temperature",
+       &P::min_temperature,
+       {0, true, 1, false},
+       "T0",
+       "Stop when T/T0 falls below (0 = no)"},
+  }};
+  return table;
+}
+
+/// A number as validation messages print it (10 significant digits, "inf", "nan").
+std::string message_number(double x);
+
+/// The row of a field name, or nullptr.
+const ParameterInfo* find_parameter(std::string_view name);
+
+/// "[2, 3]", "(0, inf)", "[0, 1)": the allowed range as validation messages print it.
+std::string range_text(const ParameterInfo& info);
+
+/// The field's value as text: shortest round-trip decimals, true/false, mode names, a
+/// space-separated list. This is what the CSV header and the cache key print.
+std::string format_value(const Parameters& p, const ParameterInfo& info);
+
+/// Inverse of format_value; throws std::invalid_argument("<name>: cannot read '<text>'").
+void parse_value(Parameters& p, const ParameterInfo& info, std::string_view text);
+
+/// Throws std::invalid_argument("<name>: value X is outside the allowed range R") if the field
+/// lies outside its static range.
+void check_range(const Parameters& p, const ParameterInfo& info);
+
+}  // namespace molchaos::sim

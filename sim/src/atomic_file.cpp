@@ -1,0 +1,110 @@
+// Atomic file replacement and the clean-up of temporaries left by killed writers.
+#include "molchaos/sim/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+
+namespace molchaos::sim {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr const char* k_marker = ".molchaos-tmp.";
+
+std::string host_name() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+  std::string host(name);
+  for (char& c : host)
+    if (c == '.' || c == '/') c = '_';  // keeps the name's fields separable
+  return host;
+}
+
+std::string error_text(int error) { return std::strerror(error); }
+
+}  // namespace
+
+std::string temporary_name(const std::string& path) {
+  static thread_local std::mt19937_64 random{std::random_device{}()};
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(random()));
+  const fs::path p(path);
+  return (p.parent_path() / ("." + p.filename().string() + k_marker + host_name() + "." +
+                             std::to_string(::getpid()) + "." + hex))
+      .string();
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write) {
+  const std::string temporary = temporary_name(path);
+  auto fail = [&](const std::string& what, int error) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error("cannot write " + path + ": " + what +
+                             (error ? " (" + error_text(error) + ")" : std::string()));
+  };
+  {
+    errno = 0;
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) fail("cannot create " + temporary, errno);
+    errno = 0;
+    try {
+      write(out);
+    } catch (const std::exception& e) {
+      fail(e.what(), 0);
+    }
+    if (!out) fail("write failed", errno);  // errno of the write that failed (e.g. ENOSPC)
+    out.flush();
+    if (!out) fail("write failed", errno);
+    out.close();
+    if (out.fail()) fail("close failed", errno);
+  }
+  if (::rename(temporary.c_str(), path.c_str()) != 0) fail("rename failed", errno);
+}
+
+void probe_writable(const std::string& path) {
+  const std::string temporary = temporary_name(path);
+  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+  if (fd < 0)
+    throw std::runtime_error("cannot create a file next to " + path + ": " + error_text(errno));
+  ::close(fd);
+  ::unlink(temporary.c_str());
+}
+
+void remove_stale_temporaries(const std::string& directory, double min_age_seconds) {
+  std::error_code ec;
+  if (directory.empty() || !fs::is_directory(directory, ec)) return;
+  const std::string host = host_name();
+  const auto now = fs::file_time_type::clock::now();
+  for (const auto& entry : fs::directory_iterator(directory, ec)) {
+    const std::string name = entry.path().filename().string();
+    const auto at = name.find(k_marker);
+    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
+    // Fields after the marker: host, pid, 16 hex digits; anything else is not ours.
+    const std::string rest = name.substr(at + std::strlen(k_marker));
+    const auto dot2 = rest.rfind('.');
+    const auto dot1 = dot2 == std::string::npos ? dot2 : rest.rfind('.', dot2 - 1);
+    if (dot1 == std::string::npos || rest.size() - dot2 - 1 != 16) continue;
+    const std::string writer_host = rest.substr(0, dot1);
+    const std::string pid_text = rest.substr(dot1 + 1, dot2 - dot1 - 1);
+    if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (rest.substr(dot2 + 1).find_first_not_of("0123456789abcdef") != std::string::npos) continue;
+    const auto modified = fs::last_write_time(entry.path(), ec);
+    if (ec) continue;
+    const double age = std::chrono::duration<double>(now - modified).count();
+    if (age < min_age_seconds) continue;
+    const bool writer_alive = writer_host == host && ::kill(std::stoi(pid_text), 0) == 0;
+    if (writer_alive || (writer_host != host && age < 86400.0)) continue;
+    fs::remove(entry.path(), ec);
+  }
+}
+
+}  // namespace molchaos::sim

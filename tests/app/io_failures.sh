@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Usage: io_failures.sh MOLCHAOS
+# The I/O layer loses nothing and says so: a corrupted cache entry is reported and recomputed,
+# unwritable or special outputs are refused (exit 2, naming the flag) before any work, snapshot
+# paths stay next to --out, and a full disk (a small tmpfs, where mounting is allowed) gives exit 1
+# with no file or temporary left behind.
+set -u
+bin=$1
+dir=$(mktemp -d)
+cleanup() { mountpoint -q "$dir/small" 2>/dev/null && umount "$dir/small"; rm -rf "$dir"; }
+trap cleanup EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+cd "$dir" || exit 1
+
+# 1. Corrupted cache entry: one changed digit of a T value.
+args=(sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 2 --quiet --threads 1 --cache cache)
+"$bin" "${args[@]}" > first.txt 2>/dev/null || fail "first sweep"
+entry=$(ls cache/*.csv | head -1)
+row=$(grep -n '^[0-9]' "$entry" | sed -n 10p | cut -d: -f1)
+sed -i "${row}s/^\([^,]*\),\([0-9.]*\)\([0-9]\)/\1,\2X\3/; ${row}s/X0/1/; ${row}s/X[1-9]/0/" "$entry"
+"$bin" "${args[@]}" > second.txt 2> second.err || fail "sweep after corruption exits non-zero"
+grep -q "warning: cache entry .*checksum mismatch" second.err || fail "corrupted entry not reported: $(cat second.err)"
+cmp -s first.txt second.txt || fail "corrupted entry changed the result"
+sed -i '1s/.*/# cache_key = 0000000000000000/' "$entry"
+"$bin" "${args[@]}" > third.txt 2> third.err || fail "sweep after key edit"
+grep -q "stored under key" third.err || fail "wrong key not reported"
+echo "ok: corrupted cache entries are reported and recomputed"
+
+# 6. The cleaner removes only its own temporaries: not a user's file with ".tmp." in its name, not
+# another writer's in-progress file.
+touch cache/thesis.tmp.tex cache/run.csv.tmp.99999999 "cache/.x.csv.molchaos-tmp.otherhost.1.0123456789abcdef"
+"$bin" "${args[@]}" > /dev/null 2>&1 || fail "sweep with foreign files in the cache"
+for f in thesis.tmp.tex run.csv.tmp.99999999 .x.csv.molchaos-tmp.otherhost.1.0123456789abcdef; do
+  [ -e "cache/$f" ] || fail "the cache cleaner deleted $f"
+done
+rm -f cache/thesis.tmp.tex cache/run.csv.tmp.99999999 cache/.x.csv.molchaos-tmp.*
+echo "ok: the cleaner leaves other files alone"
+
+# 3. Unwritable outputs fail before the work, exit 2 naming the flag.
+expect2() {
+  local flag=$1; shift
+  "$bin" "$@" > /dev/null 2> err.txt; local s=$?
+  [ "$s" -eq 2 ] && grep -q -- "$flag" err.txt || fail "'$*' gave status $s: $(cat err.txt)"
+}
+expect2 --out simulate --particles 100 --t-end 1 --out /proc/run.csv
+expect2 --out simulate --particles 100 --t-end 1 --out /sys/run.csv
+expect2 --out simulate --particles 100 --t-end 1 --out "$(printf 'x%.0s' $(seq 300)).csv"
+expect2 --cache sweep --particles 200 --seeds 1 --quiet --cache /proc/cache
+echo "ok: unwritable outputs refused before the work"
+
+# 4. Special files are not replaced.
+mkfifo fifo; ln -s target.csv link.csv
+expect2 --out simulate --particles 100 --t-end 1 --out fifo
+expect2 --out simulate --particles 100 --t-end 1 --out link.csv
+expect2 --out simulate --particles 100 --t-end 1 --out /dev/null
+[ -p fifo ] && [ -L link.csv ] || fail "a special file was replaced"
+echo "ok: special files refused"
+
+# 8. Snapshot paths stay next to --out.
+mkdir data.v2 sub
+"$bin" simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 --quiet --out data.v2/run 2>/dev/null || fail "simulate data.v2/run"
+[ -f data.v2/run.snapshot0.csv ] || fail "snapshot not in data.v2/: $(ls)"
+(cd sub && "$bin" simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 --quiet --out ../run 2>/dev/null) || fail "simulate ../run"
+[ -f run.snapshot0.csv ] || fail "snapshot of ../run not at ./run.snapshot0.csv: $(ls -a)"
+echo "ok: snapshot paths"
+
+# 2. Full disk: exit 1, nothing half-written, no temporary left.
+mkdir small
+if mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
+  for n in 2000 6000; do
+    "$bin" simulate --particles $n --t-end 1 --relax 1 --snapshot-times 1 --quiet --out small/run.csv > /dev/null 2> err.txt
+    s=$?
+    [ "$s" -eq 1 ] || fail "full disk (N = $n) gave status $s"
+    grep -q "No space left" err.txt || fail "full disk not named: $(cat err.txt)"
+    leftovers=$(ls -A small | grep -v '^run\.csv$' || true)
+    [ -z "$leftovers" ] || fail "left behind on a full disk: $leftovers"
+    rm -f small/*
+  done
+  echo "ok: full disk"
+else
+  echo "note: cannot mount a tmpfs here; full-disk case not run"
+fi
+echo "ok: io failures"
