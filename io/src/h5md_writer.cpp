@@ -2,6 +2,8 @@
 // Every time-dependent element is a group {value [F x N x d], time [F], step [F]}.
 #include "molchaos/io/h5md_writer.hpp"
 
+#include "molchaos/sim/atomic_file.hpp"
+
 #include <hdf5.h>
 #include <unistd.h>
 
@@ -156,7 +158,7 @@ void write_contents(hid_t file, const sim::RunResult& r) {
 }  // namespace
 
 void write_h5md_file(const sim::RunResult& r, const std::string& path) {
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  const std::string temporary = sim::temporary_name(path);
   try {
     Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                       temporary.c_str()),

@@ -1,6 +1,8 @@
 // Extended XYZ as read by ASE and OVITO: the comment line holds key=value pairs.
 #include "molchaos/io/xyz_writer.hpp"
 
+#include "molchaos/sim/atomic_file.hpp"
+
 #include <unistd.h>
 
 #include <charconv>
@@ -39,18 +41,9 @@ void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
 }
 
 void write_xyz_file(const sim::RunResult& r, const std::string& path) {
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + temporary);
+  sim::write_file_atomically(path, [&](std::ostream& out) {
     for (const auto& s : r.snapshots) write_xyz_frame(s, r.parameters.dimension, out);
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(temporary);
-      throw std::runtime_error("write failed: " + temporary);
-    }
-  }
-  std::filesystem::rename(temporary, path);
+  });
 }
 
 }  // namespace molchaos::io

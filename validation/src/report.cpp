@@ -9,6 +9,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/validation/verdict.hpp"
 
@@ -17,14 +18,7 @@ namespace molchaos::validation {
 void write_file_atomically(const std::string& path, const std::string& text) {
   const std::filesystem::path target(path);
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw std::runtime_error("cannot open " + tmp + " for writing");
-    out << text;
-    if (!out.flush()) throw std::runtime_error("write failed: " + tmp);
-  }
-  std::filesystem::rename(tmp, path);
+  sim::write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 namespace {

@@ -10,7 +10,7 @@
 
 namespace molchaos::validation {
 
-/// Writes `text` to path atomically (temporary file in the same folder, then rename).
+/// Writes `text` to path through sim::write_file_atomically, creating the parent folder first.
 void write_file_atomically(const std::string& path, const std::string& text);
 
 /// Fig. 4's data: columns density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err.
