@@ -59,7 +59,11 @@ void run_reproduce(const ReproduceCliOptions& o) {
     ro.output_directory = o.out;
     for (const auto& f :
          {figures::render_fig3(results.fig3, ro), figures::render_fig4(results.fig4, ro),
-          figures::render_b(results.b, ro), figures::render_snapshot(results.snapshot, ro)})
+          figures::render_b(results.b, ro), figures::render_snapshot(results.snapshot, ro),
+          figures::render_pair_correlations(results.correlations.pair_correlations, 2, 0.1, 0.8,
+                                            ro),
+          figures::render_contact_moments(results.correlations.contact_moments, ro),
+          figures::render_cooling_decomposition(results.correlations.decomposition, ro)})
       for (const auto& file : f.files)
         if (file.ends_with(".png"))
           figure_files.push_back(std::filesystem::path(file).filename().string());
@@ -68,6 +72,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
   const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
+  validation::write_correlation_tables(results.correlations, o.out);
   const std::string markdown = validation::report_markdown(results, figure_files, command);
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);

@@ -89,6 +89,8 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_flux_follows_haff,
     steps::finding_b_two_ways,
     steps::finding_higher_order_coefficients,
+    steps::finding_two_particle_distribution,
+    steps::finding_breakdown_prediction,
 };
 
 void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcomes) {
@@ -218,6 +220,7 @@ ReproduceResults reproduce(const ReproduceConfig& cfg, const SweepOptions& sweep
   theory::QuadratureOptions quad;
   quad.relative_tolerance = 1e-10;
   R.coefficients = theory::expand_collision_moment(2, 2, 0.5, theory::k_paper_dyad_factor, quad);
+  steps::run_studies(R, sweep);
   for (const auto figure : k_figures) figure(R);
   for (const auto claim : k_claims) R.claims.push_back(claim(R));
   R.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -47,5 +47,11 @@ Claim finding_elastic_limit(const ReproduceResults& results);
 Claim finding_flux_follows_haff(const ReproduceResults& results);
 Claim finding_b_two_ways(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
+Claim finding_two_particle_distribution(const ReproduceResults& results);
+Claim finding_breakdown_prediction(const ReproduceResults& results);
+
+// --- studies with runs of their own (reproduce_studies.cpp) -----------------------------------
+/// Runs the correlation study (and, at paper scale, the break-down study) into `results`.
+void run_studies(ReproduceResults& results, const SweepOptions& sweep);
 
 }  // namespace molchaos::validation::steps

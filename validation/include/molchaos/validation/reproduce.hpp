@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/validation/breakdown.hpp"
+#include "molchaos/validation/correlation_study.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/figure_data.hpp"
 #include "molchaos/validation/sweep.hpp"
@@ -60,6 +62,8 @@ struct ReproduceResults {
   PointResult fig3_original;                ///< fig3_points[0]: no shuffle
   std::vector<RunOutcome> fig3_runs;        ///< the runs behind Fig. 3's curves
   theory::ExpansionTable coefficients;      ///< μ2 expansion, d = 2, printed dyad
+  CorrelationStudy correlations;            ///< the two-particle distribution (runs of its own)
+  std::vector<BreakdownRow> breakdown;      ///< linear hydrodynamics against the runs (paper scale)
   std::vector<Claim> claims;                ///< the paper's claims first, then the suite's
   Fig3Data fig3;
   Fig4Data fig4;
