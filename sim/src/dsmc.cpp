@@ -2,6 +2,8 @@
 // exponential clock), the collision, the bookkeeping of units and bounds, and run_dsmc.
 #include "molchaos/sim/dsmc.hpp"
 
+#include "molchaos/sim/contact_statistics.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -232,24 +234,8 @@ bool DsmcGas<D>::collide(std::uint32_t i, std::uint32_t j, const double* g, doub
   draw_contact_direction<D>(g, std::sqrt(g2), rng, e);
   double before = 0;
   for (int a = 0; a < D; ++a) before += ui[a] * ui[a] + uj[a] * uj[a];
-  if (contacts_on_) {
-    const double scale = 1.0 / std::sqrt(2.0 * sum_u2_ / (static_cast<double>(n_) * D));
-    double c1e = 0, c2e = 0, c12 = 0;
-    for (int a = 0; a < D; ++a) {
-      c1e += ui[a] * e[a];
-      c2e += uj[a] * e[a];
-      c12 += ui[a] * uj[a];
-    }
-    c1e *= scale;
-    c2e *= scale;
-    const double gne = c1e - c2e;
-    ++contacts_.count;
-    contacts_.sum_c1e_c2e += c1e * c2e;
-    contacts_.sum_c1_dot_c2 += c12 * scale * scale;
-    contacts_.sum_gn2 += gne * gne;
-    contacts_.sum_abs_gn += std::fabs(gne);
-    contacts_.sum_g2 += g2 * scale * scale;
-  }
+  if (contacts_on_)
+    accumulate<D>(contacts_, ui, uj, e, sum_u2_ / (static_cast<double>(n_) * D));
   double normal_velocity = 0;
   for (int a = 0; a < D; ++a) normal_velocity += g[a] * e[a];
   rule_.apply<D>(ui, uj, e, normal_velocity, /*elastic=*/false);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "molchaos/sim/contact_statistics.hpp"
 #include "molchaos/sim/result.hpp"
 
 namespace molchaos::sim {
@@ -49,29 +50,14 @@ struct NoObserver {
 };
 
 /// Contact statistics: the sums of ContactMoments (result.hpp) over the collisions since the last
-/// take(), of the pre-collision reduced velocities c = v / sqrt(2T).
+/// take(), of the pre-collision reduced velocities c = v / sqrt(2T), and the impact-parameter
+/// histogram (contact_statistics.hpp).
 struct ContactStatistics {
   ContactMoments moments;
 
   template <int D>
   void before(const CollisionView<D>& c) {
-    const double scale = 1.0 / std::sqrt(2.0 * c.temperature);
-    double c1e = 0, c2e = 0, c12 = 0, g2 = 0;
-    for (int a = 0; a < D; ++a) {
-      c1e += c.vi[a] * c.e[a];
-      c2e += c.vj[a] * c.e[a];
-      c12 += c.vi[a] * c.vj[a];
-      g2 += (c.vi[a] - c.vj[a]) * (c.vi[a] - c.vj[a]);
-    }
-    c1e *= scale;
-    c2e *= scale;
-    const double gne = c1e - c2e;
-    ++moments.count;
-    moments.sum_c1e_c2e += c1e * c2e;
-    moments.sum_c1_dot_c2 += c12 * scale * scale;
-    moments.sum_gn2 += gne * gne;
-    moments.sum_abs_gn += std::fabs(gne);
-    moments.sum_g2 += g2 * scale * scale;
+    accumulate<D>(moments, c.vi, c.vj, c.e, c.temperature);
   }
   template <int D>
   void after(const CollisionView<D>&, const CollisionOutcome&) {}
