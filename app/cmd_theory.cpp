@@ -171,16 +171,20 @@ nlohmann::json to_json(const theory::Estimate& e) {
   return {{"value", e.value}, {"error", e.error}};
 }
 
+// The contact response's five quantities by the names the symbolic derivation gives them.
+std::array<std::pair<const char*, const theory::ResponseSeries*>, 5> contact_rows(
+    const theory::ContactResponse& c) {
+  return {{{"normal_product", &c.normal_product},
+           {"velocity_product", &c.velocity_product},
+           {"dyad", &c.dyad},
+           {"collision_frequency_ratio", &c.collision_frequency_ratio},
+           {"dissipation_ratio", &c.dissipation_ratio}}};
+}
+
 nlohmann::json to_json(const theory::ContactResponse& c) {
   nlohmann::json j;
   j["dyad_factor"] = c.dyad_factor;
-  const std::pair<const char*, const theory::ResponseSeries*> rows[] = {
-      {"normal_product", &c.normal_product},
-      {"velocity_product", &c.velocity_product},
-      {"dyad", &c.dyad},
-      {"collision_frequency_ratio", &c.collision_frequency_ratio},
-      {"dissipation_ratio", &c.dissipation_ratio}};
-  for (const auto& [name, s] : rows) {
+  for (const auto& [name, s] : contact_rows(c)) {
     const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
     j[name] = {{"value", to_json(s->value)},
                {"d_a2", to_json(s->d_a2)},
@@ -310,13 +314,7 @@ void print_contact_text(const theory::ContactResponse& c) {
       "\ncolliding pairs under f2 = f f g2 [1 + b D], D = {}·ee − U, to first order:\n"
       "{:<26} {:>26} {:>26} {:>26} {:>26}\n",
       c.dyad_factor, "quantity", "value (exact)", "∂/∂a2", "∂/∂b", "∂²/∂a2∂b");
-  const std::pair<const char*, const theory::ResponseSeries*> rows[] = {
-      {"normal_product", &c.normal_product},
-      {"velocity_product", &c.velocity_product},
-      {"dyad", &c.dyad},
-      {"collision_frequency_ratio", &c.collision_frequency_ratio},
-      {"dissipation_ratio", &c.dissipation_ratio}};
-  for (const auto& [name, s] : rows) {
+  for (const auto& [name, s] : contact_rows(c)) {
     const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
     auto cell = [&](const theory::Estimate& e, int k) {
       return fmt::format("{:.12f} ({:>5})", e.value, x ? x->texts[k] : "-");
