@@ -8,6 +8,8 @@
 #include <set>
 
 #include "molchaos/sim/csv.hpp"
+#include "molchaos/sim/run.hpp"
+#include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
 #include "molchaos/validation/ensemble.hpp"
@@ -31,6 +33,19 @@ std::vector<sim::Sample> haff_samples(double T0, double tau0, double t_max, int 
   return out;
 }
 }  // namespace
+
+// The sim library keeps its own g2 and Enskog frequency (it does not depend on theory/; DSMC and
+// the run's normalisation need them); they must be the theory library's, bit for bit.
+BOOST_AUTO_TEST_CASE(sim_and_theory_share_g2_and_enskog_frequency) {
+  for (int d : {2, 3})
+    for (double n : {1e-6, 0.05, 0.1, 0.4, 0.8}) {
+      BOOST_TEST(molchaos::sim::contact_value_g2(d, n) ==
+                 molchaos::theory::contact_value_g2_at_density(d, n));
+      for (double T : {1e-3, 1.0, 7.5})
+        BOOST_TEST(molchaos::sim::enskog_collision_frequency(d, n, T) ==
+                   molchaos::theory::enskog_collision_frequency(d, n, T));
+    }
+}
 
 BOOST_AUTO_TEST_CASE(haff_fit_recovers_exact_parameters) {
   const auto samples = haff_samples(0.97, 123.4, 1000.0, 60);

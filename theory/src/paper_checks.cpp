@@ -47,17 +47,19 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
                   verdict(paper_mu2, base.value / scale, base.error / scale),
                   "quadrature of eq. defmu2 at a2 = b = 0"});
   // Prefactor of eq. tau0, 1/tau0 = c g2 sigma^{d-1} n sqrt(2 T0/m) mu2: derived c = 1/d.
-  rows.push_back({"tau0 prefactor c in 1/tau0 = c g2 n sqrt(2T0) mu2", 1.0 / 3.0, 1.0 / d, 0.0,
-                  verdict(1.0 / 3.0, 1.0 / d, 0.0),
+  rows.push_back({"tau0 prefactor c in 1/tau0 = c g2 n sqrt(2T0) mu2", k_paper_tau0_prefactor,
+                  1.0 / d, 0.0, verdict(k_paper_tau0_prefactor, 1.0 / d, 0.0),
                   "second moment of the Enskog-Boltzmann equation: c = 1/d"});
   // ω0 = c g2 σ^{d−1} n √(πT0/m): paper prints c = 1/3; derived c = √2 μ̂_d /(d √π).
   const double omega_c =
       std::sqrt(2.0) * mu2_maxwell_prefactor(dimension) / (d * std::sqrt(std::numbers::pi));
-  rows.push_back({"omega0 prefactor c in omega0 = c g2 n sqrt(pi T0)", 1.0 / 3.0, omega_c, 0.0,
-                  verdict(1.0 / 3.0, omega_c, 0.0), "c = 1/2 (d = 2), 2/3 (d = 3)"});
+  rows.push_back({"omega0 prefactor c in omega0 = c g2 n sqrt(pi T0)", k_paper_omega0_prefactor,
+                  omega_c, 0.0, verdict(k_paper_omega0_prefactor, omega_c, 0.0),
+                  "c = 1/2 (d = 2), 2/3 (d = 3)"});
   // Temperature definition, eq. TDef: T = m/(c n) ∫ v² f; derived c = d.
-  rows.push_back({"temperature definition c in T = m/(c n) int v^2 f", 3.0, d, 0.0,
-                  verdict(3.0, d, 0.0), "equipartition in d dimensions: c = d"});
+  rows.push_back({"temperature definition c in T = m/(c n) int v^2 f", k_paper_temperature_divisor,
+                  d, 0.0, verdict(k_paper_temperature_divisor, d, 0.0),
+                  "equipartition in d dimensions: c = d"});
   return rows;
 }
 

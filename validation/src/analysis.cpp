@@ -6,6 +6,7 @@
 
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/paper_constants.hpp"
 
 namespace molchaos::validation {
 
@@ -31,7 +32,7 @@ RunAnalysis analyse_run(const sim::RunResult& run, const WindowRule& rule) {
     a2_sum += s.a2;
     ++a2_samples;
     if (s.t > a.window.t_start) {  // contact sums cover the interval ending at s.t
-      dyad_sum += 3.0 * s.contacts.sum_c1e_c2e - s.contacts.sum_c1_dot_c2;
+      dyad_sum += theory::k_paper_dyad_factor * s.contacts.sum_c1e_c2e - s.contacts.sum_c1_dot_c2;
       count += s.contacts.count;
     }
   }

@@ -8,6 +8,7 @@
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/paper_constants.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "reproduce_steps.hpp"
 
@@ -65,12 +66,14 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
   const auto& rand = find_point(R, n, e, "flux");
   if (orig.summary.runs == 0 || rand.summary.runs == 0) return;
   const double g2 = theory::contact_value_g2_at_density(k_dimension, n);
-  const double omega0_paper = g2 * n * std::sqrt(std::numbers::pi) / 3.0;
+  const double omega0_paper =
+      theory::k_paper_omega0_prefactor * g2 * n * std::sqrt(std::numbers::pi);
   const Measurement diff =
       paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
   paper_way.restitution.push_back(e);
-  paper_way.b.push_back(
-      {diff.value * omega0_paper / (63.0 / 40.0), diff.error * omega0_paper / (63.0 / 40.0)});
+  const double coefficient_b = -theory::k_paper_coefficient_b;
+  paper_way.b.push_back({diff.value * omega0_paper / coefficient_b,
+                         diff.error * omega0_paper / coefficient_b});
   const double a2 = theory::a2_first_sonine(k_dimension, e);
   const double R0 = mu2_ratio_at_b0(R.coefficients, a2);
   const double cb = mu2_ratio_b_slope(R.coefficients, a2);
@@ -168,8 +171,8 @@ TemperatureCurve deviation_curve(const TemperatureCurve& gas, double tau0, bool 
 
 void figure_fig3(ReproduceResults& R) {
   const auto& cfg = R.config;
-  R.fig3.title = fmt::format("T(t), ε = {}, n = {}, N = {}", cfg.fig3_restitution,
-                             cfg.fig3_density, cfg.particles);
+  R.fig3.title = fmt::format("T(t), ε = {}, n = {}, N = {}", cfg.fig3_restitution, cfg.fig3_density,
+                             cfg.particles);
   const double tau0_theory = theory_tau0(k_dimension, cfg.fig3_density, cfg.fig3_restitution);
   const double one_minus = 1.0 - cfg.fig3_restitution * cfg.fig3_restitution;
   std::vector<TemperatureCurve> gases;

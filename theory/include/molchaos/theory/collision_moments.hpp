@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "molchaos/theory/estimate.hpp"
+#include "molchaos/theory/paper_constants.hpp"
 
 namespace molchaos::theory {
 
@@ -43,9 +44,6 @@ struct QuadratureOptions {
   int laguerre_order = 0;  ///< gauss: Gauss–Laguerre points in u²/2 and |g⊥|²/2; 0 = exact
   std::size_t workspace_intervals = 2000;  ///< adaptive: GSL workspace size
 };
-
-/// The printed dyad factor of the paper's eq. dyad_of_e (3, the 3D traceless value).
-inline constexpr double k_paper_dyad_factor = 3.0;
 
 /// The shape of the pair distribution at contact: Sonine coefficients and correlation b.
 struct PairShape {

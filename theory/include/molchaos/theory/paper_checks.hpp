@@ -8,12 +8,9 @@
 #include <vector>
 
 #include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/theory/paper_constants.hpp"
 
 namespace molchaos::theory {
-
-/// Printed coefficients of μ2/μ2(0,0) (paper eq. mu2a2b): 1 + (3/16) a2 − (63/40) b.
-inline constexpr double k_paper_coefficient_a2 = 3.0 / 16.0;
-inline constexpr double k_paper_coefficient_b = -63.0 / 40.0;
 
 struct PaperCheck {
   std::string quantity;         ///< what is compared, e.g. "mu2 coefficient of b"

@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "molchaos/theory/estimate.hpp"
+
 namespace molchaos::validation {
 
 /// A number with its uncertainty (standard error of an ensemble mean, or a fit's standard
-/// deviation, or a quadrature error estimate — the producer says which).
-struct Measurement {
-  double value = 0.0;
-  double error = 0.0;
-};
+/// deviation, or a quadrature error estimate — the producer says which): the suite's one
+/// value±error type, shared with the theory library.
+using Measurement = theory::Estimate;
 
 /// One temperature curve T(t) (t > 0), e.g. one randomization mode averaged over its runs.
 struct TemperatureCurve {
