@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "molchaos/theory/agreement.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/dimension.hpp"
 
@@ -11,7 +12,7 @@ namespace molchaos::theory {
 
 std::optional<bool> verdict(std::optional<double> paper, double computed, double error) {
   if (!paper) return std::nullopt;
-  return std::abs(*paper - computed) <= 3.0 * error + 1e-12 * std::abs(computed);
+  return agreement({computed, error}, {*paper, 0.0}).agrees;
 }
 
 std::vector<PaperCheck> coefficient_checks(const ExpansionTable& table) {

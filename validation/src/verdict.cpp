@@ -3,20 +3,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cmath>
-
 namespace molchaos::validation {
-
-Agreement agreement(const Measurement& observed, const Measurement& expected) {
-  const double sigma = std::hypot(observed.error, expected.error);
-  const double difference = observed.value - expected.value;
-  const double exact_slack = 1e-12 * std::max(std::abs(observed.value), std::abs(expected.value));
-  Agreement a;
-  if (sigma > 0.0) a.difference_in_se = difference / sigma;
-  a.agrees = std::abs(difference) <= k_agreement_standard_errors * sigma + exact_slack;
-  return a;
-}
 
 bool significantly_below(const Measurement& observed, double bound) {
   return observed.value + k_agreement_standard_errors * observed.error < bound;

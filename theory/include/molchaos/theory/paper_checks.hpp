@@ -21,8 +21,8 @@ struct PaperCheck {
   std::string note;
 };
 
-/// Verdict rule: reproduced when |paper − computed| ≤ 3·error + 1e-12·|computed| (the last term
-/// for exact closed forms with zero error).
+/// Verdict: reproduced when the computed value agrees with the printed one by agreement()
+/// (agreement.hpp: within 3 errors, or to 1e-12 for exact closed forms with zero error).
 std::optional<bool> verdict(std::optional<double> paper, double computed, double error);
 
 /// The coefficient rows of μ2/μ2(0,0) ("a2", "a2^2", "b", "a2*b", "a2^2*b") against the paper.
