@@ -84,6 +84,8 @@ constexpr ClaimStep k_claims[] = {
     steps::claim_randomized_A_flat,
     steps::claim_original_A_depends_on_eps,
     steps::claim_clustering_onset,
+    steps::claim_shuffles_suppress_vortices,
+    steps::claim_randomized_stays_homogeneous,
     // the suite's own findings
     steps::finding_elastic_limit,
     steps::finding_flux_follows_haff,
