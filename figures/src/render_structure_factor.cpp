@@ -63,7 +63,7 @@ void gases_panel(detail::FigureScript& script, const validation::GasFieldStudy& 
     detail::Rows rows;
     for (const auto& p : g.points) {
       const auto& m = density ? p.density : p.transverse;
-      rows.push_back({p.log_time, m.value, m.error});
+      rows.push_back({p.log_time, m.value, m.error, p.transverse_predicted});
     }
     const std::string block = block_name(density ? "dens" : "gas", i);
     script.data.emplace_back(block, rows);
@@ -74,6 +74,12 @@ void gases_panel(detail::FigureScript& script, const validation::GasFieldStudy& 
                                        " using 1:2:3 with yerrorlines pointtype 7 pointsize 0.6 "
                                        "linecolor rgb " +
                                        detail::colour(i) + " title " + detail::quote(label));
+    if (!density && g.mode == "none")
+      detail::add_plot_element(plot, "$" + block +
+                                         " using 1:4 with lines dashtype 3 linewidth 2 "
+                                         "linecolor rgb " +
+                                         detail::colour(i) +
+                                         " title 'original gas, linear hydrodynamics'");
   }
   c += plot + "\n  unset logscale y\n";
 }
@@ -90,7 +96,8 @@ RenderedFigure render_structure_factors(const std::vector<validation::StructureF
   script.description =
       "Velocity and density structure factors through the break-down of the HCS (d = 2).\n"
       "sperp blocks: tau, S_perp (run mean), standard error, linear prediction.\n"
-      "gas/dens blocks: ln t, S_perp or S (mean over the shells |m|^2 <= 2), standard error.";
+      "gas/dens blocks: ln t, S_perp or S (mean over the shells |m|^2 <= 2), standard error,\n"
+      "S_perp by linear hydrodynamics (1 for the shuffled gases).";
   script.canvas.png_width = 2100;
   script.canvas.png_height = 700;
   script.canvas.pdf_width = 10.5;

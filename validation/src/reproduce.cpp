@@ -93,6 +93,8 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,
     steps::finding_breakdown_prediction,
+    steps::finding_onset_from_linear_theory,
+    steps::finding_flow_energy_share,
 };
 
 void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcomes) {

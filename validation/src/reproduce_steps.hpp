@@ -59,5 +59,7 @@ void run_studies(ReproduceResults& results, const SweepOptions& sweep);
 void run_breakdown_studies(ReproduceResults& results);
 Claim claim_shuffles_suppress_vortices(const ReproduceResults& results);
 Claim claim_randomized_stays_homogeneous(const ReproduceResults& results);
+Claim finding_onset_from_linear_theory(const ReproduceResults& results);
+Claim finding_flow_energy_share(const ReproduceResults& results);
 
 }  // namespace molchaos::validation::steps

@@ -33,10 +33,11 @@ struct GasFieldSpec {
 /// One gas at one time: the run mean ± standard error over the runs.
 struct GasFieldPoint {
   double log_time = 0;
-  double tau = 0;             ///< collisions per particle (run mean)
-  Measurement transverse;     ///< S⊥ averaged over the wavevectors of shells |m|² ≤ max_norm2
-  Measurement density;        ///< S(k) over the same wavevectors
-  Measurement flow_fraction;  ///< (T_flow − noise)/T, noise = T·(occupied cells)/N
+  double tau = 0;          ///< collisions per particle (run mean)
+  Measurement transverse;  ///< S⊥ averaged over the wavevectors of shells |m|² ≤ max_norm2
+  double transverse_predicted = 1;  ///< the same average by linear hydrodynamics at τ (1: shuffled)
+  Measurement density;              ///< S(k) over the same wavevectors
+  Measurement flow_fraction;        ///< (T_flow − noise)/T, noise = T·(occupied cells)/N
   Measurement density_contrast;  ///< variance of the particles per cell over its mean (1: Poisson)
 };
 
