@@ -67,12 +67,21 @@ void run_reproduce(const ReproduceCliOptions& o) {
       for (const auto& file : f.files)
         if (file.ends_with(".png"))
           figure_files.push_back(std::filesystem::path(file).filename().string());
+    // The break-down figures exist at paper scale only (the quick look skips their runs).
+    if (!results.gas_fields.series.empty())
+      for (const auto& f :
+           {figures::render_flow_field(results.gas_fields.fields, ro),
+            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro)})
+        for (const auto& file : f.files)
+          if (file.ends_with(".png"))
+            figure_files.push_back(std::filesystem::path(file).filename().string());
   }
 #endif
   const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
   validation::write_correlation_tables(results.correlations, o.out);
+  validation::write_breakdown_tables(results, o.out);
   const std::string markdown = validation::report_markdown(results, figure_files, command);
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);

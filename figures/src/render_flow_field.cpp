@@ -22,6 +22,31 @@ void check(const validation::FlowFieldPanel& p) {
                             n);
 }
 
+// Common scales, so that the gases and times compare at a glance: one arrow length for the whole
+// figure, one vorticity range and one density range per time (row).
+struct Scales {
+  double speed = 1e-12;
+  std::vector<double> vorticity, density;
+};
+
+Scales common_scales(const validation::FlowFieldData& data) {
+  Scales s;
+  for (const auto& row : data.rows) {
+    double w = 1e-12, d = 1e-12;
+    for (const auto& p : row) {
+      check(p);
+      for (std::size_t i = 0; i < p.vx.size(); ++i) {
+        s.speed = std::max(s.speed, std::hypot(p.vx[i], p.vy[i]));
+        w = std::max(w, std::abs(p.vorticity[i]));
+        d = std::max(d, std::abs(p.relative_density[i] - 1.0));
+      }
+    }
+    s.vorticity.push_back(w);
+    s.density.push_back(d);
+  }
+  return s;
+}
+
 }  // namespace
 
 RenderedFigure render_flow_field(const validation::FlowFieldData& data,
@@ -29,11 +54,16 @@ RenderedFigure render_flow_field(const validation::FlowFieldData& data,
   detail::require_non_empty("FlowFieldData.rows", data.rows.size());
   const std::size_t columns = data.rows.front().size();
   detail::require_non_empty("FlowFieldData.rows[0]", columns);
+  for (const auto& row : data.rows)
+    detail::require_same_size("FlowFieldData.rows[r]", row.size(), "columns", columns);
+  const Scales scale = common_scales(data);
   detail::FigureScript script;
   script.basename = "fig_flow_field";
   script.description =
-      "Coarse-grained fields: per panel pair, the mean velocity / sqrt(T) as arrows over the\n"
-      "vorticity (colour), and the number of particles per cell over its mean (colour).";
+      "Flow and density fields: per panel pair, the mean velocity / sqrt(T) as arrows over the\n"
+      "vorticity (colour), and the density over its mean (colour). One arrow scale for the whole\n"
+      "figure (longest arrow: " +
+      detail::label_number(scale.speed) + " sqrt(T)); colour ranges shared by the panels of a row.";
   script.canvas.png_width = 700 * static_cast<int>(columns);
   script.canvas.png_height = 330 * static_cast<int>(data.rows.size());
   script.canvas.pdf_width = 3.5 * static_cast<double>(columns);
@@ -44,28 +74,22 @@ RenderedFigure render_flow_field(const validation::FlowFieldData& data,
   c += "  set size ratio -1\n  unset key\n  set tics out nomirror\n  set format x ''\n"
        "  set format y ''\n";
   for (std::size_t r = 0; r < data.rows.size(); ++r) {
-    detail::require_same_size("FlowFieldData.rows[r]", data.rows[r].size(), "columns", columns);
     for (std::size_t col = 0; col < columns; ++col) {
       const auto& p = data.rows[r][col];
-      check(p);
       const double w = p.box / p.cells;
+      // about 12 arrows per side, however fine the grid
+      const int stride = std::max(1, p.cells / 12);
       detail::Rows vort, dens, arrows;
-      double vmax = 1e-12, wmax = 1e-12, dmax = 1.0;
       for (int y = 0; y < p.cells; ++y)
         for (int x = 0; x < p.cells; ++x) {
           const auto i = static_cast<std::size_t>(y * p.cells + x);
           const double cx = (x + 0.5) * w, cy = (y + 0.5) * w;
           vort.push_back({cx, cy, p.vorticity[i]});
           dens.push_back({cx, cy, p.relative_density[i]});
-          arrows.push_back({cx, cy, p.vx[i], p.vy[i]});
-          vmax = std::max(vmax, std::hypot(p.vx[i], p.vy[i]));
-          wmax = std::max(wmax, std::abs(p.vorticity[i]));
-          dmax = std::max(dmax, p.relative_density[i]);
+          if (x % stride == 0 && y % stride == 0)
+            arrows.push_back({cx, cy, 0.9 * stride * w * p.vx[i] / scale.speed,
+                              0.9 * stride * w * p.vy[i] / scale.speed});
         }
-      for (auto& a : arrows) {
-        a[2] *= 0.9 * w / vmax;
-        a[3] *= 0.9 * w / vmax;
-      }
       const std::string tag = std::to_string(r) + "_" + std::to_string(col);
       script.data.emplace_back("vort" + tag, vort);
       script.data.emplace_back("dens" + tag, dens);
@@ -73,12 +97,14 @@ RenderedFigure render_flow_field(const validation::FlowFieldData& data,
       const std::string range = "[0:" + detail::number(p.box) + "]";
       c += "  set xrange " + range + "\n  set yrange " + range + "\n";
       c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
-      c += "  set cbrange [" + detail::number(-wmax) + ":" + detail::number(wmax) + "]\n";
+      c += "  set cbrange [" + detail::number(-scale.vorticity[r]) + ":" +
+           detail::number(scale.vorticity[r]) + "]\n";
       c += "  set title " + detail::quote(p.title + ": flow, vorticity") + " font ',9'\n";
       c += "  plot $vort" + tag + " using 1:2:3 with image, $arrows" + tag +
            " using 1:2:3:4 with vectors head size screen 0.004,25 filled lc rgb 'black'\n";
-      c += "  set palette defined (0 '#ffffff', 1 '#fdae61', 2 '#d7191c', 3 '#40004b')\n";
-      c += "  set cbrange [0:" + detail::number(dmax) + "]\n";
+      c += "  set palette defined (-1 '#01665e', 0 '#f5f5f5', 1 '#8c510a')\n";
+      c += "  set cbrange [" + detail::number(1.0 - scale.density[r]) + ":" +
+           detail::number(1.0 + scale.density[r]) + "]\n";
       c += "  set title " + detail::quote(p.title + ": density / mean") + " font ',9'\n";
       c += "  plot $dens" + tag + " using 1:2:3 with image\n";
     }

@@ -12,6 +12,7 @@
 #include <limits>
 #include <numeric>
 
+#include "molchaos/sim/result.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/hydrodynamics.hpp"
@@ -40,20 +41,6 @@ struct Box {
   std::vector<double> sample_times;
   std::vector<RunRecord> runs;
 };
-
-double collisions_per_particle_at(const std::vector<sim::Sample>& s, double t, double n) {
-  auto it = std::lower_bound(s.begin(), s.end(), t,
-                             [](const sim::Sample& a, double x) { return a.t < x; });
-  if (it == s.begin()) return 2.0 * static_cast<double>(it->collisions) / n;
-  if (it == s.end()) return 2.0 * static_cast<double>(s.back().collisions) / n;
-  const auto& b = *it;
-  const auto& a = *(it - 1);
-  const double f = (t - a.t) / (b.t - a.t);
-  return 2.0 *
-         (static_cast<double>(a.collisions) +
-          f * (static_cast<double>(b.collisions) - static_cast<double>(a.collisions))) /
-         n;
-}
 
 Box simulate_box(const BreakdownSpec& spec, std::int64_t particles,
                  const std::function<double(double)>& time_of_tau) {
@@ -293,7 +280,51 @@ void onset_rows(const Box& box, const theory::TransportCoefficients& c,
 
 }  // namespace
 
-std::vector<BreakdownRow> breakdown_study(const BreakdownSpec& spec) {
+double collisions_per_particle_at(const std::vector<sim::Sample>& s, double t, double n) {
+  auto it = std::lower_bound(s.begin(), s.end(), t,
+                             [](const sim::Sample& a, double x) { return a.t < x; });
+  if (it == s.begin()) return 2.0 * static_cast<double>(it->collisions) / n;
+  if (it == s.end()) return 2.0 * static_cast<double>(s.back().collisions) / n;
+  const auto& b = *it;
+  const auto& a = *(it - 1);
+  const double f = (t - a.t) / (b.t - a.t);
+  return 2.0 *
+         (static_cast<double>(a.collisions) +
+          f * (static_cast<double>(b.collisions) - static_cast<double>(a.collisions))) /
+         n;
+}
+
+namespace {
+
+// S⊥ of the shells |m|² = 1, 2, 4 (run mean ± standard error) against the prediction.
+void append_curves(const Box& box, const theory::TransportCoefficients& c,
+                   std::vector<StructureFactorCurve>& curves) {
+  const auto runs = static_cast<double>(box.runs.size());
+  for (std::size_t shell = 0; shell < std::min<std::size_t>(3, box.wavenumbers.size()); ++shell) {
+    StructureFactorCurve curve;
+    curve.wavenumber = box.wavenumbers[shell];
+    curve.box = 2 * M_PI / box.wavenumbers.front();
+    for (std::size_t j = 0; j < box.runs.front().tau.size(); ++j) {
+      double tau = 0, sum = 0, sum2 = 0;
+      for (const auto& r : box.runs) {
+        tau += r.tau[j] / runs;
+        sum += r.transverse[j][shell];
+        sum2 += r.transverse[j][shell] * r.transverse[j][shell];
+      }
+      const double mean = sum / runs;
+      curve.tau.push_back(tau);
+      curve.measured.push_back(mean);
+      curve.error.push_back(std::sqrt(std::max(0.0, sum2 / runs - mean * mean) / (runs - 1)));
+      curve.predicted.push_back(theory::transverse_structure_factor(c, curve.wavenumber, tau));
+    }
+    curves.push_back(std::move(curve));
+  }
+}
+
+}  // namespace
+
+std::vector<BreakdownRow> breakdown_study(const BreakdownSpec& spec,
+                                          std::vector<StructureFactorCurve>* curves) {
   const auto c = theory::transport_coefficients({2, spec.density, spec.restitution, std::nullopt});
   theory::CoolingInputs in;
   in.dimension = 2;
@@ -315,6 +346,10 @@ std::vector<BreakdownRow> breakdown_study(const BreakdownSpec& spec) {
   growth_rows(unstable, c, rows);
   stable_row(stable, c, rows);
   onset_rows(unstable, c, time_of_tau, rows);
+  if (curves) {
+    append_curves(unstable, c, *curves);
+    append_curves(stable, c, *curves);
+  }
   return rows;
 }
 

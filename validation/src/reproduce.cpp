@@ -84,6 +84,8 @@ constexpr ClaimStep k_claims[] = {
     steps::claim_randomized_A_flat,
     steps::claim_original_A_depends_on_eps,
     steps::claim_clustering_onset,
+    steps::claim_shuffles_suppress_vortices,
+    steps::claim_randomized_stays_homogeneous,
     // the suite's own findings
     steps::finding_elastic_limit,
     steps::finding_flux_follows_haff,
@@ -91,6 +93,8 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,
     steps::finding_breakdown_prediction,
+    steps::finding_onset_from_linear_theory,
+    steps::finding_flow_energy_share,
 };
 
 void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcomes) {

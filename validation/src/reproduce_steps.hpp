@@ -54,4 +54,12 @@ Claim finding_breakdown_prediction(const ReproduceResults& results);
 /// Runs the correlation study (and, at paper scale, the break-down study) into `results`.
 void run_studies(ReproduceResults& results, const SweepOptions& sweep);
 
+// --- the break-down of the homogeneous cooling state (reproduce_breakdown.cpp) ---------------
+/// At paper scale: the break-down study and the three gases side by side, into `results`.
+void run_breakdown_studies(ReproduceResults& results);
+Claim claim_shuffles_suppress_vortices(const ReproduceResults& results);
+Claim claim_randomized_stays_homogeneous(const ReproduceResults& results);
+Claim finding_onset_from_linear_theory(const ReproduceResults& results);
+Claim finding_flow_energy_share(const ReproduceResults& results);
+
 }  // namespace molchaos::validation::steps

@@ -16,9 +16,7 @@ void run_studies(ReproduceResults& R, const SweepOptions& sweep) {
       R.config.quick ? CorrelationStudyConfig::quick_look() : CorrelationStudyConfig::paper_scale(),
       sweep);
   R.failed_runs += R.correlations.failed_runs;
-  // The break-down study needs the paper's box (N = 5000) and about 110 collisions per particle:
-  // half a minute of runs, so the quick look leaves it out.
-  if (!R.config.quick) R.breakdown = breakdown_study();
+  run_breakdown_studies(R);
 }
 
 Claim finding_two_particle_distribution(const ReproduceResults& R) {

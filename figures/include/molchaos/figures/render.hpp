@@ -6,9 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "molchaos/validation/breakdown.hpp"
 #include "molchaos/validation/correlation_tables.hpp"
 #include "molchaos/validation/figure_data.hpp"
 #include "molchaos/validation/flow_field.hpp"
+#include "molchaos/validation/gas_fields.hpp"
 
 namespace molchaos::figures {
 
@@ -59,6 +61,12 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
 /// Writes fig_flow_field.{png,pdf,gp}.
 RenderedFigure render_flow_field(const validation::FlowFieldData& data,
                                  const RenderOptions& options);
+
+/// S⊥(k, τ) against linear hydrodynamics, and S⊥, S(k) of the largest modes against ln t for
+/// the original and the randomized gases. Writes fig_structure_factor.{png,pdf,gp}.
+RenderedFigure render_structure_factors(const std::vector<validation::StructureFactorCurve>& curves,
+                                        const validation::GasFieldStudy& gases,
+                                        const RenderOptions& options);
 
 /// G∥(r) and G⊥(r) of the original and the molecular-chaos gas at every stored time, one state
 /// point. Writes fig_pair_correlations.{png,pdf,gp}.

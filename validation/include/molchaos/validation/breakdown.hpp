@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+namespace molchaos::sim {
+struct Sample;
+}
+
 namespace molchaos::validation {
 
 struct BreakdownSpec {
@@ -29,7 +33,21 @@ struct BreakdownRow {
   std::string note;
 };
 
-std::vector<BreakdownRow> breakdown_study(const BreakdownSpec& spec = {});
+/// S⊥(k, τ) of one shell, the mean over the runs ± its standard error, against the linear
+/// prediction at the same τ (collisions per particle).
+struct StructureFactorCurve {
+  double wavenumber = 0;
+  double box = 0;  ///< L in σ; above or below L_c
+  std::vector<double> tau, measured, error, predicted;
+};
+
+/// Runs the study; if `curves` is given, fills it with S⊥(τ) of the lowest shells of both boxes.
+std::vector<BreakdownRow> breakdown_study(const BreakdownSpec& spec = {},
+                                          std::vector<StructureFactorCurve>* curves = nullptr);
+
+/// Collisions per particle τ = 2·collisions/N at time t, interpolated between samples.
+double collisions_per_particle_at(const std::vector<sim::Sample>& samples, double t,
+                                  double particles);
 
 /// The table as Markdown (for the report).
 std::string breakdown_markdown(const std::vector<BreakdownRow>& rows);

@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+namespace molchaos::sim {
+struct Snapshot;
+}
+
 namespace molchaos::validation {
 
 /// One snapshot on a cells × cells grid (row-major, x fastest): density relative to the mean,
@@ -33,6 +37,16 @@ struct FlowFieldSpec {
   int cells = 10;  ///< ~50 particles per cell at N = 5000: flow above the noise
   std::uint64_t seed = 7;
 };
+
+/// One panel from a d = 2 snapshot coarse-grained on cells × cells.
+FlowFieldPanel flow_field_panel(const sim::Snapshot& snapshot, int cells, std::string title);
+
+/// One panel of the hydrodynamic fields only: density, velocity and vorticity built from the
+/// Fourier modes with |m|² ≤ max_norm2 (wavelengths ≥ L/√max_norm2), sampled at the centres of
+/// cells × cells. The particle noise of the shorter waves, which hides the flow in coarse cells at
+/// N = 5000, is left out: a gas without correlations shows only the few long waves' noise.
+FlowFieldPanel long_wave_panel(const sim::Snapshot& snapshot, int cells, int max_norm2,
+                               std::string title);
 
 /// Runs one simulation per mode (the same seed, so the same initial state) and coarse-grains
 /// its snapshots.

@@ -12,6 +12,8 @@
 #include "molchaos/validation/correlation_study.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/figure_data.hpp"
+#include "molchaos/validation/flow_energy.hpp"
+#include "molchaos/validation/gas_fields.hpp"
 #include "molchaos/validation/sweep.hpp"
 
 namespace molchaos::validation {
@@ -64,7 +66,10 @@ struct ReproduceResults {
   theory::ExpansionTable coefficients;      ///< μ2 expansion, d = 2, printed dyad
   CorrelationStudy correlations;            ///< the two-particle distribution (runs of its own)
   std::vector<BreakdownRow> breakdown;      ///< linear hydrodynamics against the runs (paper scale)
-  std::vector<Claim> claims;                ///< the paper's claims first, then the suite's
+  std::vector<StructureFactorCurve> breakdown_curves;  ///< S⊥(k, τ) behind `breakdown`
+  std::vector<FlowEnergyPoint> flow_energy;  ///< flow's share of T, t ≤ 4τ0 (paper scale)
+  GasFieldStudy gas_fields;  ///< original and randomized gases through the break-down (paper scale)
+  std::vector<Claim> claims;  ///< the paper's claims first, then the suite's
   Fig3Data fig3;
   Fig4Data fig4;
   BData b;
@@ -76,6 +81,11 @@ struct ReproduceResults {
 
 /// Number of claims whose verdict is "not reproduced" or "contradicted".
 int count_not_reproduced(const ReproduceResults& results);
+
+/// Writes breakdown_linear_hydrodynamics.csv, breakdown_structure_factors.csv,
+/// breakdown_gases.csv and flow_energy_share.csv into `directory` (nothing when the break-down
+/// studies did not run).
+void write_breakdown_tables(const ReproduceResults& results, const std::string& directory);
 
 /// Runs (or loads from the cache) everything and analyses it.
 ReproduceResults reproduce(const ReproduceConfig& config, const SweepOptions& sweep);
