@@ -11,6 +11,7 @@
 #include <map>
 
 #include "molchaos/validation/pair_correlations.hpp"
+#include "molchaos/validation/verdict.hpp"
 
 namespace molchaos::validation {
 namespace {
@@ -276,8 +277,7 @@ BRoutesVerdict compare_routes(const std::vector<RoutePair>& routes, const std::s
       chi2_ratio += std::pow(f.cooling.value - r * f.contact.value, 2) / variance(f, r);
   const double inflate = v.points > 1 ? std::max(1.0, chi2_ratio / (v.points - 1)) : 1.0;
   v.ratio = {r, info > 0.0 ? std::sqrt(inflate / info) : 0.0};
-  // Two-sided 3σ (p = 0.0027), the suite's threshold for a single number.
-  v.verdict = v.p_value >= 0.0027 ? "consistent" : "inconsistent";
+  v.verdict = v.p_value >= k_global_p_threshold ? "consistent" : "inconsistent";
   v.statement = fmt::format(
       "Over {} state points {} from the cooling rate is {:.2f} ± {:.2f} times {} from the contact "
       "statistics, and equality gives chi2 = {:.1f} for {} dof (p = {:.2g}): the two routes are "

@@ -11,6 +11,7 @@
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/report.hpp"
+#include "molchaos/validation/verdict.hpp"
 
 namespace molchaos::validation {
 
@@ -128,7 +129,7 @@ void add_pair_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int 
 
 namespace {
 
-std::string verdict_p(double p) { return p >= 0.0027 ? "holds" : "fails"; }
+std::string verdict_p(double p) { return p >= k_global_p_threshold ? "holds" : "fails"; }
 
 // Inverse-variance weighted mean of values with errors (points without an error skipped).
 Measurement weighted_mean(const std::vector<Measurement>& v) {
@@ -177,7 +178,7 @@ void cooling_claims(CorrelationStudy& S) {
                                   std::pair{"energy-loss deficit ln(Y_chaos/Y_orig)", my}})
       S.claims.push_back(
           {fmt::format("{} (d = {}, n = {}), weighted over eps", what, d, n),
-           std::abs(m.value) > 3.0 * m.error ? "resolved" : "not resolved", m,
+           agreement(m, {0.0, 0.0}).agrees ? "not resolved" : "resolved", m,
            fmt::format("share of ln(A_orig/A_chaos): {:.2f}", m.value / (mw.value + my.value))});
   }
 }
@@ -207,7 +208,7 @@ void ansatz_claims(CorrelationStudy& S) {
        fmt::format("chi2/dof, chi2 = {:.1f}, dof = {}, p = {:.2g}", chi2, 2 * points, p2)});
   const Measurement dev = weighted_mean(deviation);
   S.claims.push_back({"angular structure as printed: beta_perp = -beta_par/2",
-                      std::abs(dev.value) <= 3.0 * dev.error ? "holds" : "fails", dev,
+                      agreement(dev, {0.0, 0.0}).agrees ? "holds" : "fails", dev,
                       "weighted mean of beta_perp + beta_par/2 over the points"});
   std::vector<RoutePair> b, beta;
   for (const auto& f : S.ansatz) {

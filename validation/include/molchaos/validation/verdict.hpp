@@ -16,6 +16,10 @@ using theory::Agreement;
 using theory::agreement;
 using theory::k_agreement_standard_errors;
 
+/// A claim over many points (a χ² over all of them) holds when its upper tail probability is at
+/// least that of a single number at 3 standard errors, two-sided: p = 0.0027.
+inline constexpr double k_global_p_threshold = 0.0027;
+
 /// True when observed + 3σ_observed < bound (a claim of the form "less than bound").
 bool significantly_below(const Measurement& observed, double bound);
 
