@@ -94,7 +94,6 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   const ParameterInfo& dimension = *find_parameter("dimension");
   if (field("dimension") != format_value(p, dimension))
     throw differs("dimension", field("dimension"), format_value(p, dimension));
-  if (field("layout") != layout) throw differs("layout", field("layout"), layout);
   for (const ParameterInfo& info : parameter_table()) {
     const std::string key(info.name), ours = format_value(p, info);
     if (key == "t_end") continue;  // may change: checked by run() against the checkpoint's time
@@ -102,6 +101,7 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
       throw refuse("parameter " + key + " differs: checkpoint " + field(key) + ", this run " +
                    ours + " (only t_end may change on a restart)");
   }
+  if (field("layout") != layout) throw differs("layout", field("layout"), layout);
   Parameters saved = p;
   try {
     parse_value(saved, *find_parameter("t_end"), field("t_end"));
