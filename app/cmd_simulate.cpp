@@ -17,6 +17,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/sim.hpp"
 #ifdef MOLCHAOS_HAVE_IO
@@ -34,6 +35,7 @@ struct SimulateOptions {
   std::string trajectory;  // H5MD file of the snapshots (empty: none)
   std::string xyz;         // extended XYZ file of the snapshots (empty: none)
   bool quiet = false;
+  std::string write_config;  // TOML file of the parameters (empty: none)
   sim::CheckpointOptions checkpoints;
 };
 
@@ -97,6 +99,12 @@ void run_simulate(const SimulateOptions& options) {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
+  }
+
+  if (!options.write_config.empty()) {
+    require_writable_file("--write-config", options.write_config, false);
+    sim::write_file_atomically(options.write_config,
+                               [&](std::ostream& out) { write_config_toml(p, out); });
   }
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
@@ -166,7 +174,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--restart", checkpoints.restart,
                   "Continue the run saved in this checkpoint (same parameters; t_end may change): "
                   "the output is byte for byte the uninterrupted run's");
-  cmd->callback([options] { run_simulate(*options); });
+  cmd->add_option("--write-config", options->write_config,
+                  "Also write the run's parameters as a TOML file that --config reads back");
+  set_callback_with_config(cmd, [options] { run_simulate(*options); });
 }
 
 }  // namespace molchaos::app
