@@ -11,13 +11,11 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
 #include "molchaos/sim/cell_grid.hpp"
-#include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/run.hpp"
 
@@ -420,7 +418,6 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
 
 #include "engine_pair_search.ipp"
 #include "engine_state.ipp"
-#include "engine_checkpoint.ipp"
 
 // The engines in use (add one line per dimension for a new collision observer).
 template class Engine<2, NoObserver>;

@@ -112,7 +112,7 @@ class Engine {
   /// Approximate heap memory held by the engine's arrays, in bytes.
   std::size_t memory_bytes() const;
 
-  /// Checkpoints (checkpoint.hpp, engine_checkpoint.ipp): the whole state that the parameters do
+  /// Checkpoints (checkpoint.hpp, engine_checkpoint.cpp): the whole state that the parameters do
   /// not fix, bit for bit, between advance_to() calls. restore_state() into an engine constructed
   /// from the same parameters (not relaxed) continues exactly as the saved one would have.
   void save_state(CheckpointWriter& out) const;
