@@ -27,6 +27,14 @@ class UsageError : public std::runtime_error {
       : std::runtime_error(argument + ": " + what) {}
 };
 
+/// A run stopped by a signal after writing its checkpoint: main() prints the message and exits
+/// with status 3 (k_exit_interrupted), so that a batch script can tell it from a failure.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+inline constexpr int k_exit_interrupted = 3;
+
 inline std::string format_interval(double lo, bool lo_closed, double hi, bool hi_closed) {
   auto num = [](double x) {
     if (std::isinf(x)) return std::string(x > 0 ? "inf" : "-inf");

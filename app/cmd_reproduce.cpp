@@ -10,6 +10,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/validation/report.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/reproduce.hpp"
@@ -113,7 +114,7 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
   cmd->add_flag("!--no-figures", o->figures, "skip rendering");
-  cmd->callback([o] { run_reproduce(*o); });
+  set_callback_with_config(cmd, [o] { run_reproduce(*o); });
 }
 
 }  // namespace molchaos::app

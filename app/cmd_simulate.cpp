@@ -1,18 +1,23 @@
 // `molchaos simulate`: flags -> sim::Parameters (validated once), run, write the CSV atomically.
 // No physics here.
+#include <signal.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/sim.hpp"
 #ifdef MOLCHAOS_HAVE_IO
@@ -30,7 +35,42 @@ struct SimulateOptions {
   std::string trajectory;  // H5MD file of the snapshots (empty: none)
   std::string xyz;         // extended XYZ file of the snapshots (empty: none)
   bool quiet = false;
+  std::string write_config;  // TOML file of the parameters (empty: none)
+  sim::CheckpointOptions checkpoints;
 };
+
+// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end.
+std::atomic<bool> g_interrupt{false};
+volatile std::sig_atomic_t g_signal = 0;
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void request_checkpoint(int signal) {
+  g_signal = signal;
+  g_interrupt.store(true);
+}
+
+void install_checkpoint_signals() {
+  struct sigaction action {};
+  action.sa_handler = request_checkpoint;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGTERM, &action, nullptr);
+  sigaction(SIGINT, &action, nullptr);
+}
+
+// The run, or nothing when a signal interrupted it (the checkpoint is then written).
+std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
+                                               const sim::ProgressReporter& progress) {
+  sim::CheckpointOptions checkpoints = options.checkpoints;
+  if (!checkpoints.path.empty()) {
+    install_checkpoint_signals();
+    checkpoints.interrupt = &g_interrupt;
+  }
+  try {
+    return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
+  } catch (const sim::CheckpointError& e) {
+    throw UsageError("--restart", e.what());
+  }
+}
 
 // "dir/run.csv" -> "dir/run.snapshot<k>.csv": the extension of the file name only (a dot in a
 // directory name such as data.v2/ or ../ is not an extension).
@@ -49,10 +89,22 @@ void run_simulate(const SimulateOptions& options) {
     require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
   if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
   if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
+  const sim::CheckpointOptions& checkpoints = options.checkpoints;
+  if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
+  if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
+    throw UsageError("--checkpoint-interval", "needs --checkpoint FILE");
+  if (!checkpoints.restart.empty() && !std::filesystem::is_regular_file(checkpoints.restart))
+    throw UsageError("--restart", "no checkpoint file '" + checkpoints.restart + "'");
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
+  }
+
+  if (!options.write_config.empty()) {
+    require_writable_file("--write-config", options.write_config, false);
+    sim::write_file_atomically(options.write_config,
+                               [&](std::ostream& out) { write_config_toml(p, out); });
   }
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
@@ -67,8 +119,13 @@ void run_simulate(const SimulateOptions& options) {
                    static_cast<double>(report.collisions), rate / 1e6);
       std::fflush(stderr);
     };
-  const sim::RunResult result = sim::run_with_progress(p, progress);
+  const std::optional<sim::RunResult> run = run_checkpointed(options, progress);
   if (show_progress) std::fprintf(stderr, "\n");
+  if (!run)
+    throw Interrupted("simulate: stopped by signal " + std::to_string(g_signal) +
+                      "; checkpoint written to " + checkpoints.path + "; continue with --restart " +
+                      checkpoints.path);
+  const sim::RunResult& result = *run;
 
   sim::write_csv_file(result, options.out);
   for (std::size_t k = 0; k < result.snapshots.size(); ++k)
@@ -84,8 +141,7 @@ void run_simulate(const SimulateOptions& options) {
                sim::stop_message(result).c_str(), options.out.c_str());
   if (result.stop_reason == sim::StopReason::collapse)
     throw std::runtime_error("run stopped early: " + sim::stop_message(result) +
-                             " (partial results in " +
-                             options.out + ")");
+                             " (partial results in " + options.out + ")");
 }
 
 }  // namespace
@@ -104,7 +160,23 @@ void add_simulate_command(CLI::App& app) {
                   "Extended XYZ file of the configurations at --snapshot-times, one frame each");
 #endif
   cmd->add_flag("--quiet", options->quiet, "No progress display");
-  cmd->callback([options] { run_simulate(*options); });
+  sim::CheckpointOptions& checkpoints = options->checkpoints;
+  cmd->add_option("--checkpoint", checkpoints.path,
+                  "Checkpoint file, written atomically at the intervals below and on SIGTERM or "
+                  "SIGINT (then the run ends with exit status 3)");
+  cmd->add_option("--checkpoint-interval", checkpoints.interval,
+                  "Simulated time between checkpoints (taken at the first sample time after it; "
+                  "0 = none) [sigma sqrt(m/T0)]")
+      ->check(real_in(0, true, std::numeric_limits<double>::infinity(), false));
+  cmd->add_option("--checkpoint-wall", checkpoints.wall_interval,
+                  "Wall-clock seconds between checkpoints (0 = none)")
+      ->check(real_in(0, true, std::numeric_limits<double>::infinity(), false));
+  cmd->add_option("--restart", checkpoints.restart,
+                  "Continue the run saved in this checkpoint (same parameters; t_end may change): "
+                  "the output is byte for byte the uninterrupted run's");
+  cmd->add_option("--write-config", options->write_config,
+                  "Also write the run's parameters as a TOML file that --config reads back");
+  set_callback_with_config(cmd, [options] { run_simulate(*options); });
 }
 
 }  // namespace molchaos::app

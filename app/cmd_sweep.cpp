@@ -11,6 +11,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/version.hpp"
@@ -128,7 +129,7 @@ void add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV");
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
-  cmd->callback([o] { run_sweep_command(*o); });
+  set_callback_with_config(cmd, [o] { run_sweep_command(*o); });
 }
 
 }  // namespace molchaos::app

@@ -15,6 +15,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/contact_response.hpp"
 #include "molchaos/theory/cooling.hpp"
@@ -25,8 +26,8 @@
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/theory/sonine_hcs.hpp"
 #include "molchaos/version.hpp"
-#include "theory_hydrodynamics_output.hpp"
 #include "parameter_options.hpp"
+#include "theory_hydrodynamics_output.hpp"
 
 namespace molchaos::app {
 namespace {
@@ -371,7 +372,7 @@ void add_theory_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
   auto hydrodynamics = add_hydrodynamics_options(*cmd);
-  cmd->callback([options, hydrodynamics] { run_theory(*options, *hydrodynamics); });
+  set_callback_with_config(cmd, [options, hydrodynamics] { run_theory(*options, *hydrodynamics); });
 }
 
 }  // namespace molchaos::app

@@ -67,6 +67,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
+  } catch (const molchaos::app::Interrupted& e) {
+    std::fprintf(stderr, "molchaos: %s\n", e.what());
+    return molchaos::app::k_exit_interrupted;
   } catch (const molchaos::app::UsageError& e) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;

@@ -2,15 +2,19 @@
 // Every time-dependent element is a group {value [F x N x d], time [F], step [F]}.
 #include "molchaos/io/h5md_writer.hpp"
 
-#include "molchaos/sim/atomic_file.hpp"
-
 #include <hdf5.h>
 #include <unistd.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
+
+#include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::io {
 namespace {
@@ -65,17 +69,31 @@ void boundary_attribute(hid_t box, int dimension) {
   check_status(H5Awrite(attr.id, type.id, all.data()), "boundary");
 }
 
+// A creation property list of class `kind` without object timestamps: HDF5 stamps every object
+// header with its creation time by default, so the same run would give different bytes.
+// The caller closes it (Handle{untimed(kind), H5Pclose}).
+hid_t untimed(hid_t kind) {
+  const hid_t plist = check(H5Pcreate(kind), "property list");
+  if (H5Pset_obj_track_times(plist, false) < 0) {
+    H5Pclose(plist);
+    throw std::runtime_error("HDF5: cannot switch off object timestamps");
+  }
+  return plist;
+}
+
 void dataset(hid_t where, const char* name, hid_t type, const std::vector<hsize_t>& shape,
              const void* data) {
   Handle space{H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose};
+  const Handle plist{untimed(H5P_DATASET_CREATE), H5Pclose};
   Handle set{
-      check(H5Dcreate2(where, name, type, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name),
+      check(H5Dcreate2(where, name, type, space.id, H5P_DEFAULT, plist.id, H5P_DEFAULT), name),
       H5Dclose};
   check_status(H5Dwrite(set.id, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), name);
 }
 
 Handle group(hid_t where, const char* name) {
-  return {check(H5Gcreate2(where, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), name), H5Gclose};
+  const Handle plist{untimed(H5P_GROUP_CREATE), H5Pclose};
+  return {check(H5Gcreate2(where, name, H5P_DEFAULT, plist.id, H5P_DEFAULT), name), H5Gclose};
 }
 
 // One time-dependent element: value (F x N x d), time (F), step (F).
@@ -102,28 +120,29 @@ void time_series(hid_t particles, const char* name, const sim::RunResult& r, boo
 void parameters_group(hid_t file, const sim::RunResult& r) {
   const sim::Parameters& p = r.parameters;
   Handle g = group(file, "parameters");
-  auto real = [&](const char* name, double x) {
-    numeric_attribute(g.id, name, H5T_IEEE_F64LE, std::vector<double>{x}, true);
-  };
-  auto integer = [&](const char* name, std::int64_t x) {
-    numeric_attribute(g.id, name, H5T_STD_I64LE, std::vector<std::int64_t>{x}, true);
-  };
-  integer("dimension", p.dimension);
-  integer("particles", p.particles);
-  real("density", p.density);
-  real("restitution", p.restitution);
-  string_attribute(g.id, "randomize", std::string(sim::to_string(p.randomize)));
-  numeric_attribute(g.id, "seed", H5T_STD_U64LE, std::vector<std::uint64_t>{p.seed}, true);
-  real("t_end", p.t_end);
-  real("relax_collisions_per_particle", p.relax_collisions_per_particle);
-  real("tc", p.tc);
-  integer("samples_per_decade", p.samples_per_decade);
-  real("t_first_sample", p.t_first_sample);
-  integer("contact_statistics", p.contact_statistics ? 1 : 0);
-  numeric_attribute(g.id, "snapshot_times", H5T_IEEE_F64LE, p.snapshot_times, false);
-  numeric_attribute(g.id, "max_collisions", H5T_STD_U64LE,
-                    std::vector<std::uint64_t>{p.max_collisions}, true);
-  real("min_temperature", p.min_temperature);
+  // Every row of the parameter table: numbers as numbers (flags as 0/1), lists as arrays, named
+  // choices as their names.
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    const std::string key(info.name);
+    const char* name = key.c_str();
+    std::visit(
+        [&](auto member) {
+          const auto& value = p.*member;
+          using T = std::remove_cvref_t<decltype(value)>;
+          if constexpr (std::is_same_v<T, double>)
+            numeric_attribute(g.id, name, H5T_IEEE_F64LE, std::vector<double>{value}, true);
+          else if constexpr (std::is_same_v<T, std::uint64_t>)
+            numeric_attribute(g.id, name, H5T_STD_U64LE, std::vector<std::uint64_t>{value}, true);
+          else if constexpr (std::is_integral_v<T>)  // int, int64, bool
+            numeric_attribute(g.id, name, H5T_STD_I64LE,
+                              std::vector<std::int64_t>{static_cast<std::int64_t>(value)}, true);
+          else if constexpr (std::is_same_v<T, std::vector<double>>)
+            numeric_attribute(g.id, name, H5T_IEEE_F64LE, value, false);
+          else
+            string_attribute(g.id, name, sim::format_value(p, info));
+        },
+        info.field);
+  }
   string_attribute(g.id, "stop_reason", sim::stop_message(r));
   string_attribute(g.id, "version", r.version);
 }
@@ -160,7 +179,8 @@ void write_contents(hid_t file, const sim::RunResult& r) {
 void write_h5md_file(const sim::RunResult& r, const std::string& path) {
   const std::string temporary = sim::temporary_name(path);
   try {
-    Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+    const Handle file_plist{untimed(H5P_FILE_CREATE), H5Pclose};  // the root group too
+    Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, file_plist.id, H5P_DEFAULT),
                       temporary.c_str()),
                 H5Fclose};
     write_contents(file.id, r);

@@ -7,8 +7,12 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
+#include "molchaos/sim/checkpoint.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/cooling.hpp"
@@ -84,48 +88,51 @@ T keyword_as(const std::string& name, py::handle value) {
   }
 }
 
-// Keyword arguments into sim::Parameters, one field at a time. A walk over the shared parameter
-// table replaces this list once the table exists; validation stays sim::validate.
-sim::Parameters parameters_from(const py::kwargs& kwargs) {
+template <class T>
+constexpr bool is_plain_v =
+    std::is_arithmetic_v<T> || std::is_same_v<T, std::vector<double>>;  // else: a named choice
+
+// Keyword arguments into sim::Parameters by a walk over the parameter table (a keyword is a
+// row's name; `dim` also names the dimension); named choices (randomize) are read as the CSV
+// header reads them. Validation stays sim::validate. The checkpoint keywords go to `checkpoints`.
+sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions& checkpoints) {
   sim::Parameters p;
   for (auto item : kwargs) {
     const auto name = item.first.cast<std::string>();
     const py::handle v = item.second;
-    if (name == "dim" || name == "dimension")
-      p.dimension = keyword_as<int>(name, v);
-    else if (name == "particles")
-      p.particles = keyword_as<std::int64_t>(name, v);
-    else if (name == "density")
-      p.density = keyword_as<double>(name, v);
-    else if (name == "restitution")
-      p.restitution = keyword_as<double>(name, v);
-    else if (name == "randomize") {
-      const auto mode = sim::parse_randomization(keyword_as<std::string>(name, v));
-      if (!mode) throw py::value_error("randomize: must be one of none, paper, flux");
-      p.randomize = *mode;
-    } else if (name == "seed")
-      p.seed = keyword_as<std::uint64_t>(name, v);
-    else if (name == "t_end")
-      p.t_end = keyword_as<double>(name, v);
-    else if (name == "relax_collisions_per_particle")
-      p.relax_collisions_per_particle = keyword_as<double>(name, v);
-    else if (name == "tc")
-      p.tc = keyword_as<double>(name, v);
-    else if (name == "samples_per_decade")
-      p.samples_per_decade = keyword_as<int>(name, v);
-    else if (name == "t_first_sample")
-      p.t_first_sample = keyword_as<double>(name, v);
-    else if (name == "contact_statistics")
-      p.contact_statistics = keyword_as<bool>(name, v);
-    else if (name == "snapshot_times")
-      p.snapshot_times = keyword_as<std::vector<double>>(name, v);
-    else if (name == "max_collisions")
-      p.max_collisions = keyword_as<std::uint64_t>(name, v);
-    else if (name == "min_temperature")
-      p.min_temperature = keyword_as<double>(name, v);
-    else
+    if (name == "checkpoint") {
+      checkpoints.path = keyword_as<std::string>(name, v);
+      continue;
+    }
+    if (name == "checkpoint_interval") {
+      checkpoints.interval = keyword_as<double>(name, v);
+      if (!(checkpoints.interval >= 0)) throw py::value_error("checkpoint_interval: must be >= 0");
+      continue;
+    }
+    if (name == "restart") {
+      checkpoints.restart = keyword_as<std::string>(name, v);
+      continue;
+    }
+    const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
+    if (info == nullptr)
       throw py::type_error("simulate() got an unexpected keyword argument '" + name + "'");
+    std::visit(
+        [&](auto member) {
+          using T = std::remove_cvref_t<decltype(p.*member)>;
+          if constexpr (is_plain_v<T>) {
+            p.*member = keyword_as<T>(name, v);
+          } else {
+            try {
+              sim::parse_value(p, *info, keyword_as<std::string>(name, v));
+            } catch (const std::invalid_argument&) {
+              throw py::value_error(name + ": must be one of " + sim::range_text(*info));
+            }
+          }
+        },
+        info->field);
   }
+  if (checkpoints.path.empty() && checkpoints.interval > 0)
+    throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
@@ -134,23 +141,20 @@ sim::Parameters parameters_from(const py::kwargs& kwargs) {
   return p;
 }
 
+// Every row of the parameter table: numbers and lists as such, named choices as their names.
 py::dict parameters_dict(const sim::Parameters& p) {
   py::dict d;
-  d["dimension"] = p.dimension;
-  d["particles"] = p.particles;
-  d["density"] = p.density;
-  d["restitution"] = p.restitution;
-  d["randomize"] = std::string(sim::to_string(p.randomize));
-  d["seed"] = p.seed;
-  d["t_end"] = p.t_end;
-  d["relax_collisions_per_particle"] = p.relax_collisions_per_particle;
-  d["tc"] = p.tc;
-  d["samples_per_decade"] = p.samples_per_decade;
-  d["t_first_sample"] = p.t_first_sample;
-  d["contact_statistics"] = p.contact_statistics;
-  d["snapshot_times"] = p.snapshot_times;
-  d["max_collisions"] = p.max_collisions;
-  d["min_temperature"] = p.min_temperature;
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    std::visit(
+        [&](auto member) {
+          using T = std::remove_cvref_t<decltype(p.*member)>;
+          const std::string key(info.name);
+          if constexpr (is_plain_v<T>)
+            d[key.c_str()] = p.*member;
+          else
+            d[key.c_str()] = sim::format_value(p, info);
+        },
+        info.field);
   return d;
 }
 
@@ -171,11 +175,14 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
 }
 
 py::dict simulate(const py::kwargs& kwargs) {
-  const sim::Parameters p = parameters_from(kwargs);
+  sim::CheckpointOptions checkpoints;
+  const sim::Parameters p = parameters_from(kwargs, checkpoints);
   sim::RunResult r;
-  {
-    py::gil_scoped_release release;  // the engine touches no Python object
-    r = sim::run(p);
+  try {
+    py::gil_scoped_release release;                      // the engine touches no Python object
+    r = *sim::run_with_checkpoints(p, {}, checkpoints);  // no interrupt: always a result
+  } catch (const sim::CheckpointError& e) {
+    throw py::value_error(e.what());
   }
   const auto& s = r.samples;
   py::dict d;
@@ -220,5 +227,7 @@ PYBIND11_MODULE(_molchaos, m) {
   m.def("simulate", &simulate,
         "One cooling run. Keyword arguments are the fields of sim::Parameters (dim, particles, "
         "density, restitution, randomize, seed, t_end, ...), validated like the CLI's flags; "
-        "returns a dict with numpy arrays t, T, a2, collisions and the run's metadata.");
+        "returns a dict with numpy arrays t, T, a2, collisions and the run's metadata. "
+        "checkpoint=FILE with checkpoint_interval=DT writes checkpoints; restart=FILE continues "
+        "one (the result equals the uninterrupted run's).");
 }

@@ -1,13 +1,18 @@
-// run(Parameters): initial state, elastic relaxation, the cooling run on the sample grid.
+// run(Parameters): initial state, elastic relaxation, the cooling run on the sample grid; its
+// checkpoints and restarts (checkpoint.hpp).
 #include "molchaos/sim/run.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <type_traits>
 
+#include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/engine.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/version.hpp"
 
 namespace molchaos::sim {
@@ -15,21 +20,63 @@ namespace {
 
 constexpr std::uint64_t k_progress_events = 1u << 20;
 
+// The run's state beside the engine's in a checkpoint: the last target reached (whose samples and
+// snapshots are taken), the wall time spent, the samples and snapshots so far.
+void save_run(CheckpointWriter& out, double done, double wall_seconds, const RunResult& result) {
+  out(done, wall_seconds, result.samples, static_cast<std::uint64_t>(result.snapshots.size()));
+  for (const Snapshot& snap : result.snapshots)
+    out(snap.t, snap.box, snap.positions, snap.velocities);
+}
+
+void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunResult& result) {
+  std::uint64_t snapshots = 0;
+  in(done, wall_seconds, result.samples, snapshots);
+  if (snapshots > 1u << 20) in.fail("corrupt snapshot count");
+  result.snapshots.resize(static_cast<std::size_t>(snapshots));
+  for (Snapshot& snap : result.snapshots) in(snap.t, snap.box, snap.positions, snap.velocities);
+}
+
+template <class RunEngine>
+std::string run_layout() {
+  return RunEngine::checkpoint_layout() + " sample " + std::to_string(sizeof(Sample));
+}
+
 // Observer: ContactStatistics when the run records them, else NoObserver (nothing per collision).
+// Checkpoints are written and interrupts obeyed only between advance_to() calls (at sample
+// times and at the progress pauses), where stopping changes nothing in the engine's state; with
+// none asked for, the run does exactly what it did without them.
 template <int D, class Observer>
-RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
+std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& progress,
+                               const CheckpointOptions& checkpoints) {
   const auto start = std::chrono::steady_clock::now();
+  double wall_before = 0;  // seconds spent before a restart
   auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return wall_before +
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   using RunEngine = Engine<D, Observer>;
   RunEngine engine(p);
-  engine.relax(p.relax_collisions_per_particle);
 
   RunResult result;
   result.parameters = p;
   result.version = k_version;
   result.stop_reason = StopReason::t_end;
+  double done = -std::numeric_limits<double>::infinity();  // last target reached and observed
+  if (checkpoints.restart.empty()) {
+    engine.relax(p.relax_collisions_per_particle);
+  } else {
+    double saved_t_end = 0;
+    CheckpointReader in =
+        read_checkpoint_file(checkpoints.restart, p, run_layout<RunEngine>(), &saved_t_end);
+    restore_run(in, done, wall_before, result);
+    engine.restore_state(in);
+    in.finish();
+    // A new t_end keeps the sample grid below both ends: the samples taken stay valid.
+    if (p.t_end != saved_t_end && !(engine.time() < p.t_end && done < p.t_end * (1 - 1e-12)))
+      throw CheckpointError("checkpoint " + checkpoints.restart +
+                            ": t_end = " + message_number(p.t_end) +
+                            " lies before the checkpoint's time " + message_number(engine.time()));
+  }
 
   const std::vector<double> samples = sample_times(p);
   std::vector<double> snapshots = p.snapshot_times;
@@ -39,12 +86,37 @@ RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
   std::sort(targets.begin(), targets.end());
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
 
-  std::size_t next_sample = 0, next_snapshot = 0;
+  double last_wall = elapsed(), next_checkpoint = std::max(done, 0.0) + checkpoints.interval;
+  auto save = [&] {
+    if (checkpoints.path.empty()) return;
+    CheckpointWriter out;
+    save_run(out, done, elapsed(), result);
+    engine.save_state(out);
+    write_checkpoint_file(checkpoints.path, p, run_layout<RunEngine>(), out.data());
+    last_wall = elapsed();
+  };
+  auto interrupted = [&] {
+    return checkpoints.interrupt != nullptr && checkpoints.interrupt->load();
+  };
+  auto wall_due = [&] {
+    return checkpoints.wall_interval > 0 && elapsed() - last_wall >= checkpoints.wall_interval;
+  };
+
+  std::size_t next_sample = static_cast<std::size_t>(
+      std::upper_bound(samples.begin(), samples.end(), done) - samples.begin());
+  std::size_t next_snapshot = static_cast<std::size_t>(
+      std::upper_bound(snapshots.begin(), snapshots.end(), done) - snapshots.begin());
   for (double t : targets) {
+    if (t <= done) continue;  // reached before the restart
     auto status = engine.advance_to(t, k_progress_events);
     while (status == RunEngine::Status::paused) {
       if (progress)
         progress({engine.time() / p.t_end, engine.collisions(), engine.events(), elapsed()});
+      if (interrupted()) {
+        save();
+        return std::nullopt;
+      }
+      if (wall_due()) save();
       status = engine.advance_to(t, k_progress_events);
     }
     auto take_sample = [&engine] {
@@ -69,6 +141,16 @@ RunResult run_d(const Parameters& p, const ProgressReporter& progress) {
       snap.t = t;
       result.snapshots.push_back(std::move(snap));
       ++next_snapshot;
+    }
+    done = t;
+    if (t == targets.back()) break;  // finished: nothing left to checkpoint
+    if (interrupted()) {
+      save();
+      return std::nullopt;
+    }
+    if ((checkpoints.interval > 0 && t >= next_checkpoint) || wall_due()) {
+      save();
+      next_checkpoint = t + checkpoints.interval;
     }
   }
   result.collisions = engine.collisions();
@@ -107,12 +189,18 @@ double enskog_collision_frequency(int dimension, double density, double temperat
          std::sqrt(std::numbers::pi * temperature);
 }
 
-RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress) {
+std::optional<RunResult> run_with_checkpoints(const Parameters& p, const ProgressReporter& progress,
+                                              const CheckpointOptions& checkpoints) {
   validate(p);
   if (p.contact_statistics)
-    return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress)
-                            : run_d<3, ContactStatistics>(p, progress);
-  return p.dimension == 2 ? run_d<2, NoObserver>(p, progress) : run_d<3, NoObserver>(p, progress);
+    return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress, checkpoints)
+                            : run_d<3, ContactStatistics>(p, progress, checkpoints);
+  return p.dimension == 2 ? run_d<2, NoObserver>(p, progress, checkpoints)
+                          : run_d<3, NoObserver>(p, progress, checkpoints);
+}
+
+RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress) {
+  return *run_with_checkpoints(p, progress, CheckpointOptions{});  // never interrupted
 }
 
 RunResult run(const Parameters& p, const ProgressCallback& progress) {

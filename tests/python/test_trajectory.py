@@ -2,6 +2,7 @@
 elsewhere), against the snapshot CSVs of the same run: the same doubles come back."""
 
 import subprocess
+import time
 
 import ase.io
 import h5py
@@ -71,3 +72,42 @@ def test_extended_xyz_read_by_ase(run):
         assert atoms.cell[0, 0] == meta["box"] and atoms.cell[1, 1] == meta["box"]
         assert list(atoms.pbc) == [True, True, dim == 3]
         assert atoms.info["Time"] == meta["t"]
+
+
+def test_same_seed_same_h5md_bytes(molchaos_bin, tmp_path):
+    """HDF5 object timestamps are off: the same run gives the same file, byte for byte, even when
+    written a second later."""
+    files = []
+    for name in ("a", "b"):
+        (tmp_path / name).mkdir()
+        subprocess.run(
+            [molchaos_bin, "simulate", "--particles", "150", "--density", "0.05", "--seed", "7",
+             "--t-end", "6", "--relax", "5", "--quiet", "--snapshot-times", "2", "5",
+             "--out", str(tmp_path / name / "run.csv"),
+             "--trajectory", str(tmp_path / name / "run.h5")],
+            check=True, capture_output=True)
+        files.append((tmp_path / name / "run.h5").read_bytes())
+        time.sleep(1.1)  # timestamps have a resolution of one second
+    assert files[0] == files[1]
+
+
+def test_h5md_parameters_are_the_table(run):
+    """The parameters group holds every parameter of the run CSV's header, equal to it."""
+    dim, d, _ = run
+    header = {}
+    for line in open(d / "run.csv"):
+        if not line.startswith("# ") or " = " not in line:
+            continue
+        key, value = line[2:].rstrip("\n").split(" = ", 1)
+        header[key] = value
+    with h5py.File(d / "run.h5", "r") as f:
+        attrs = f["parameters"].attrs
+        for key in ("dimension", "particles", "density", "restitution", "seed", "t_end",
+                    "relax_collisions_per_particle", "tc", "samples_per_decade",
+                    "t_first_sample", "max_collisions", "min_temperature"):
+            assert float(attrs[key]) == float(header[key]), key
+        randomize = attrs["randomize"]
+        randomize = randomize.decode() if isinstance(randomize, bytes) else str(randomize)
+        assert randomize == header["randomize"]
+        assert int(attrs["contact_statistics"]) == (header["contact_statistics"] == "true")
+        assert list(attrs["snapshot_times"]) == [float(x) for x in header["snapshot_times"].split()]

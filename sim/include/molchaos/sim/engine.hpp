@@ -34,6 +34,9 @@
 
 namespace molchaos::sim {
 
+class CheckpointWriter;  // checkpoint.hpp
+class CheckpointReader;
+
 /// Observer: the per-collision observer (collision_observers.hpp), NoObserver by default.
 template <int D, class Observer = NoObserver>
 class Engine {
@@ -109,7 +112,17 @@ class Engine {
   /// Approximate heap memory held by the engine's arrays, in bytes.
   std::size_t memory_bytes() const;
 
+  /// Checkpoints (checkpoint.hpp, engine_checkpoint.cpp): the whole state that the parameters do
+  /// not fix, bit for bit, between advance_to() calls. restore_state() into an engine constructed
+  /// from the same parameters (not relaxed) continues exactly as the saved one would have.
+  void save_state(CheckpointWriter& out) const;
+  void restore_state(CheckpointReader& in);
+  /// Sizes of the saved records (a checkpoint of another layout is refused).
+  static std::string checkpoint_layout();
+
  private:
+  template <class Self, class Archive>
+  static void checkpoint_members(Self& self, Archive& archive);
   enum class Outcome { reached, resync, paused, stopped };
   template <class Shuffle>
   Outcome run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,

@@ -89,6 +89,15 @@ class EventCalendar {
 
   void prefetch(std::int32_t i) const { __builtin_prefetch(&e_[static_cast<std::size_t>(i)]); }
 
+  /// Every member, for checkpoints (checkpoint.hpp): a restored calendar pops the same events in
+  /// the same order, ties included. Self: const EventCalendar to write, EventCalendar to read.
+  template <class Self, class Archive>
+  static void checkpoint_members(Self& self, Archive& archive) {
+    archive(self.n_, self.origin_, self.width_, self.inv_width_, self.buckets_, self.mask_,
+            self.current_, self.cycle_start_, self.filed_, self.e_, self.head_, self.occupied_,
+            self.overflow_);
+  }
+
   std::size_t memory_bytes() const {
     return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t) +
            occupied_.capacity() * sizeof(std::uint64_t);

@@ -58,6 +58,13 @@ class NeighbourLists {
   /// Empties i's list.
   void clear(std::int32_t i) { count_[i] = 0; }
 
+  /// Every member, for checkpoints (checkpoint.hpp). Self: const NeighbourLists to write,
+  /// NeighbourLists to read.
+  template <class Self, class Archive>
+  static void checkpoint_members(Self& self, Archive& archive) {
+    archive(self.n_, self.capacity_, self.slots_, self.count_);
+  }
+
   std::size_t memory_bytes() const {
     return slots_.capacity() * sizeof(std::int32_t) + count_.capacity() * sizeof(std::int32_t);
   }

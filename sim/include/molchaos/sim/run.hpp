@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
+
+#include "molchaos/sim/checkpoint.hpp"
 
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/result.hpp"
@@ -25,6 +28,13 @@ using ProgressReporter = std::function<void(const Progress&)>;
 /// max_collisions, min_temperature) returns normally; stop_reason says why.
 RunResult run(const Parameters& p, const ProgressCallback& progress = {});
 RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress);
+/// The same with checkpoints (checkpoint.hpp): writes them where and when `checkpoints` asks, and
+/// starts from checkpoints.restart when it names one (the result is then byte for byte the
+/// uninterrupted run's). Returns nothing when *checkpoints.interrupt was set: the checkpoint (if
+/// a path is given) holds the run at that point. Throws CheckpointError for a checkpoint that
+/// does not fit p.
+std::optional<RunResult> run_with_checkpoints(const Parameters& p, const ProgressReporter& progress,
+                                              const CheckpointOptions& checkpoints);
 
 /// Log-spaced sample times: 0, t_first * 10^(j / samples_per_decade) < t_end, and t_end.
 std::vector<double> sample_times(const Parameters& p);

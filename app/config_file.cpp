@@ -1,0 +1,218 @@
+// --config FILE for every subcommand: a TOML file or a result CSV's header (config_file.hpp).
+#include "config_file.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <ostream>
+#include <set>
+
+#include "cli_support.hpp"
+#include "molchaos/sim/parameter_table.hpp"
+
+namespace molchaos::app {
+namespace {
+
+// Header keys of a run CSV that describe the result, not its input.
+const std::set<std::string> k_result_keys = {"version", "stop_reason", "collisions", "events",
+                                             "rows",    "cache_key",   "checksum"};
+
+std::string trim(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+bool ends_with(const std::string& text, const std::string& tail) {
+  return text.size() >= tail.size() &&
+         text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.
+std::string toml_scalar(const std::string& text, const std::string& where) {
+  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'')) {
+    if (text.back() != text.front()) throw UsageError("--config", where + ": unterminated string");
+    std::string value;
+    for (std::size_t k = 1; k + 1 < text.size(); ++k) {
+      if (text.front() == '"' && text[k] == '\\' && k + 2 < text.size()) ++k;
+      value += text[k];
+    }
+    return value;
+  }
+  if (text.empty()) throw UsageError("--config", where + ": missing value");
+  return text;
+}
+
+// Splits at the top-level commas of an array's inside (commas inside strings are kept).
+std::vector<std::string> toml_array(const std::string& inside, const std::string& where) {
+  std::vector<std::string> values;
+  std::string item;
+  char quote = 0;
+  for (const char c : inside) {
+    if (quote == 0 && c == ',') {
+      if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
+      item.clear();
+      continue;
+    }
+    if (quote == 0 && (c == '"' || c == '\''))
+      quote = c;
+    else if (c == quote)
+      quote = 0;
+    item += c;
+  }
+  if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
+  return values;
+}
+
+// The text before a comment: '#' outside quotes.
+std::string strip_comment(const std::string& line) {
+  char quote = 0;
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (quote == 0 && c == '#') return line.substr(0, k);
+    if (quote == 0 && (c == '"' || c == '\''))
+      quote = c;
+    else if (c == quote)
+      quote = 0;
+  }
+  return line;
+}
+
+ConfigItems read_toml(std::istream& in, const std::string& path) {
+  ConfigItems items;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    const std::string where = path + " line " + std::to_string(number);
+    const std::string text = trim(strip_comment(line));
+    if (text.empty()) continue;
+    if (text.front() == '[')
+      throw UsageError("--config", where + ": tables are not used; write key = value lines");
+    const auto eq = text.find('=');
+    if (eq == std::string::npos) throw UsageError("--config", where + ": expected key = value");
+    std::string key = trim(text.substr(0, eq));
+    if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
+      key = key.substr(1, key.size() - 2);
+    const std::string value = trim(text.substr(eq + 1));
+    if (!value.empty() && value.front() == '[') {
+      if (value.back() != ']')
+        throw UsageError("--config", where + ": an array must close on its line");
+      items.emplace_back(key, toml_array(value.substr(1, value.size() - 2), where));
+    } else {
+      items.emplace_back(key, std::vector<std::string>{toml_scalar(value, where)});
+    }
+  }
+  return items;
+}
+
+// A result CSV: "# key = value" lines up to the column line; lists are space separated.
+ConfigItems read_csv_header(std::istream& in) {
+  ConfigItems items;
+  std::string line;
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    const auto eq = line.find(" = ");
+    if (eq == std::string::npos || line.size() < 2) continue;
+    const std::string key = trim(line.substr(1, eq - 1));
+    if (key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+      continue;  // the title line
+    std::vector<std::string> values;
+    std::string value = line.substr(eq + 3), word;
+    for (std::size_t at = 0; at <= value.size(); ++at) {
+      if (at == value.size() || value[at] == ' ') {
+        if (!word.empty()) values.push_back(word);
+        word.clear();
+      } else {
+        word += value[at];
+      }
+    }
+    items.emplace_back(key, values);
+  }
+  return items;
+}
+
+// The option of `key` in cmd: a parameter table name's flag, else --key, else --key with '_'
+// as '-'. nullptr when none.
+CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
+  if (const sim::ParameterInfo* info = sim::find_parameter(key))
+    if (CLI::Option* op = cmd->get_option_no_throw(std::string(info->flag))) return op;
+  if (CLI::Option* op = cmd->get_option_no_throw("--" + key)) return op;
+  std::string dashed = key;
+  std::replace(dashed.begin(), dashed.end(), '_', '-');
+  return cmd->get_option_no_throw("--" + dashed);
+}
+
+std::string allowed_keys(CLI::App* cmd) {
+  std::string keys;
+  for (const CLI::Option* op : cmd->get_options()) {
+    const std::string name = op->get_single_name();
+    if (name.empty() || name == "help" || name == "config" || !op->get_configurable()) continue;
+    keys += (keys.empty() ? "" : ", ") + name;
+  }
+  return keys;
+}
+
+}  // namespace
+
+ConfigItems read_config_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError("--config", "cannot read '" + path + "'");
+  const bool csv = ends_with(path, ".csv");
+  if (csv && in.peek() != '#')
+    throw UsageError("--config", path + ": no '# key = value' header (not a molchaos result file)");
+  return csv ? read_csv_header(in) : read_toml(in, path);
+}
+
+void add_config_option(CLI::App* cmd, std::string& path) {
+  cmd->add_option("--config", path,
+                  "Options from a TOML file (key = value, keys as the flags or the parameter "
+                  "names) or a result CSV's header (repeats that run); flags given win")
+      ->check(CLI::ExistingFile)
+      ->configurable(false);
+}
+
+void apply_config_file(CLI::App* cmd, const std::string& path) {
+  if (path.empty()) return;
+  const bool csv = ends_with(path, ".csv");
+  for (const auto& [key, values] : read_config_file(path)) {
+    CLI::Option* op = option_of(cmd, key);
+    if (op == nullptr || !op->get_configurable()) {
+      // A result file names its outputs and the run's other inputs: skipped where not options.
+      if (csv && (k_result_keys.count(key) > 0 || sim::find_parameter(key) != nullptr)) continue;
+      throw UsageError("--config", path + ": unknown key '" + key + "' for " + cmd->get_name() +
+                                       "; allowed: " + allowed_keys(cmd));
+    }
+    if (op->count() > 0 || values.empty()) continue;  // given on the command line, or empty
+    try {
+      if (op->get_expected_min() == 0) {  // a flag: true or false
+        if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))
+          throw CLI::ValidationError(op->get_name(), "expects true or false");
+        op->add_result(op->get_flag_value(op->get_single_name(), values[0]));
+      } else {
+        op->add_result(values);
+      }
+      op->run_callback();
+    } catch (const CLI::ParseError& e) {
+      throw UsageError("--config", path + ": key '" + key + "': " + e.what());
+    }
+  }
+}
+
+void write_config_toml(const sim::Parameters& p, std::ostream& out) {
+  out << "# molchaos simulate parameters (read back with --config)\n";
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    const std::string text = sim::format_value(p, info);
+    out << info.name << " = ";
+    if (std::holds_alternative<std::vector<double> sim::Parameters::*>(info.field)) {
+      std::string list = text;
+      std::replace(list.begin(), list.end(), ' ', ',');
+      out << "[" << list << "]\n";
+      continue;
+    }
+    double number = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+    const bool bare = text == "true" || text == "false" ||
+                      (ec == std::errc() && end == text.data() + text.size());
+    out << (bare ? text : "\"" + text + "\"") << "\n";
+  }
+}
+
+}  // namespace molchaos::app

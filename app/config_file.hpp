@@ -1,0 +1,53 @@
+// Input files: every subcommand takes its options from a file (--config FILE) as well as from
+// flags, the flags winning. A file is either TOML (key = value; strings, booleans, numbers,
+// one-line arrays; no tables) or a result CSV (a name ending in .csv), whose "# key = value"
+// header is read, so that `simulate --config run.csv` repeats that run. A key is a parameter table
+// name (t_end, relax_collisions_per_particle) or an option's long name (t-end, relax, seeds); each
+// value goes through the option's own check, so an out-of-range value names its range as a flag
+// would.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "molchaos/sim/parameters.hpp"
+
+namespace molchaos::app {
+
+/// (key, values) in file order; TOML arrays and the CSV header's space-separated lists give
+/// several values, an empty value none.
+using ConfigItems = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+/// Reads a TOML file or a result CSV's header; throws UsageError("--config", ...) naming the
+/// file and line of a syntax error.
+ConfigItems read_config_file(const std::string& path);
+
+/// Adds --config FILE to cmd; `path` receives it. Call apply_config_file() first thing in cmd's
+/// callback (after the command line is parsed, so flags given there win).
+void add_config_option(CLI::App* cmd, std::string& path);
+
+/// Gives every option of cmd not set on the command line its value from the file (if any);
+/// throws UsageError naming the file and the key: unknown key (with the allowed keys), or the
+/// option's check failing (with its allowed range).
+void apply_config_file(CLI::App* cmd, const std::string& path);
+
+/// cmd's callback: reads --config FILE (added here) into the options not given as flags, then
+/// runs `action`.
+template <class Action>
+void set_callback_with_config(CLI::App* cmd, Action action) {
+  auto path = std::make_shared<std::string>();
+  add_config_option(cmd, *path);
+  cmd->callback([cmd, path, action] {
+    apply_config_file(cmd, *path);
+    action();
+  });
+}
+
+/// The parameters as a TOML file that --config reads back (parameter table names as keys).
+void write_config_toml(const sim::Parameters& p, std::ostream& out);
+
+}  // namespace molchaos::app

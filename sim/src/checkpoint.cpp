@@ -1,0 +1,124 @@
+// The checkpoint file: a text head (magic line, format, description of the run) ended by an empty
+// line, then the payload's size, the payload and its checksum (FNV-1a, 64 bit). The head can be
+// read with `head`; the payload is the memory image of the run's state.
+#include "molchaos/sim/checkpoint.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/version.hpp"
+
+namespace molchaos::sim {
+namespace {
+
+constexpr const char* k_magic = "molchaos checkpoint\n";
+
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  for (const char c : bytes) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 0x100000001b3ULL;
+  }
+  return hash;
+}
+
+// "key = value" lines up to the first empty line, from `at` on; `at` ends past that line.
+std::map<std::string, std::string> read_head(const std::string& text, std::size_t& at,
+                                             const std::string& path) {
+  std::map<std::string, std::string> head;
+  for (;;) {
+    const std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) throw CheckpointError("checkpoint " + path + ": truncated head");
+    const std::string line = text.substr(at, end - at);
+    at = end + 1;
+    if (line.empty()) return head;
+    const std::size_t eq = line.find(" = ");
+    if (eq == std::string::npos)
+      throw CheckpointError("checkpoint " + path + ": corrupt head line '" + line + "'");
+    head[line.substr(0, eq)] = line.substr(eq + 3);
+  }
+}
+
+}  // namespace
+
+std::string checkpoint_description(const Parameters& p, const std::string& layout) {
+  std::string text = "version = " + std::string(k_version) + "\nlayout = " + layout + "\n";
+  for (const ParameterInfo& info : parameter_table())
+    text += std::string(info.name) + " = " + format_value(p, info) + "\n";
+  return text;
+}
+
+void write_checkpoint_file(const std::string& path, const Parameters& p, const std::string& layout,
+                           const std::string& payload) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << k_magic << "format = " << k_checkpoint_format << "\n"
+        << checkpoint_description(p, layout) << "\n";
+    const std::uint64_t size = payload.size(), checksum = fnv1a(payload);
+    out.write(reinterpret_cast<const char*>(&size), sizeof size);
+    out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
+    out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
+  });
+}
+
+CheckpointReader read_checkpoint_file(const std::string& path, const Parameters& p,
+                                      const std::string& layout, double* saved_t_end) {
+  auto refuse = [&](const std::string& what) -> CheckpointError {
+    return CheckpointError("checkpoint " + path + ": " + what);
+  };
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw refuse("cannot open");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string magic(k_magic);
+  if (text.compare(0, magic.size(), magic) != 0) throw refuse("not a molchaos checkpoint");
+  std::size_t at = magic.size();
+  std::map<std::string, std::string> head = read_head(text, at, path);
+  auto field = [&](const std::string& key) -> std::string {
+    const auto it = head.find(key);
+    if (it == head.end()) throw refuse("no '" + key + "' in the head");
+    return it->second;
+  };
+  auto differs = [&](const std::string& key, const std::string& theirs, const std::string& ours) {
+    return refuse(key + " differs: checkpoint " + theirs + ", this run " + ours);
+  };
+  // In order: what makes the rest unreadable first.
+  if (field("format") != std::to_string(k_checkpoint_format))
+    throw differs("format", field("format"), std::to_string(k_checkpoint_format));
+  if (field("version") != k_version)
+    throw refuse("written by molchaos " + field("version") + ", this is " + k_version +
+                 " (a restart is exact only with the build that wrote the checkpoint)");
+  const ParameterInfo& dimension = *find_parameter("dimension");
+  if (field("dimension") != format_value(p, dimension))
+    throw differs("dimension", field("dimension"), format_value(p, dimension));
+  for (const ParameterInfo& info : parameter_table()) {
+    const std::string key(info.name), ours = format_value(p, info);
+    if (key == "t_end") continue;  // may change: checked by run() against the checkpoint's time
+    if (field(key) != ours)
+      throw refuse("parameter " + key + " differs: checkpoint " + field(key) + ", this run " +
+                   ours + " (only t_end may change on a restart)");
+  }
+  if (field("layout") != layout) throw differs("layout", field("layout"), layout);
+  Parameters saved = p;
+  try {
+    parse_value(saved, *find_parameter("t_end"), field("t_end"));
+  } catch (const std::invalid_argument& e) {
+    throw refuse(e.what());
+  }
+  *saved_t_end = saved.t_end;
+
+  std::uint64_t size = 0, checksum = 0;
+  if (text.size() - at < 2 * sizeof size) throw refuse("truncated payload");
+  std::memcpy(&size, text.data() + at, sizeof size);
+  at += sizeof size;
+  if (size != text.size() - at - sizeof checksum) throw refuse("truncated payload");
+  std::string payload = text.substr(at, static_cast<std::size_t>(size));
+  std::memcpy(&checksum, text.data() + at + size, sizeof checksum);
+  if (checksum != fnv1a(payload)) throw refuse("checksum mismatch (corrupt file)");
+  return CheckpointReader(std::move(payload), path);
+}
+
+}  // namespace molchaos::sim

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Usage: checkpoint_refused.sh MOLCHAOS EXPECT_USAGE_ERROR
+# A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
+# differs: another format, version, dimension or parameter, a corrupt or truncated file, a t_end
+# before the checkpoint's time; and --checkpoint-interval without --checkpoint.
+set -u
+bin=$(realpath "$1")
+expect=$(realpath "$2")
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir" || exit 1
+base=(simulate --particles 400 --density 0.1 --contacts --quiet)
+args=("${base[@]}" --restitution 0.9)
+"$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
+  { echo "FAIL: run with checkpoints"; exit 1; }
+failures=0
+refused() {  # refused REGEX ARGS...: molchaos simulate ARGS is a usage error matching REGEX
+  local regex=$1
+  shift
+  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
+  head -1 out.txt
+}
+refused "--restart.*parameter restitution differs: checkpoint 0.9, this run 0.8.*only t_end" \
+  "${base[@]}" --restitution 0.8 --out b.csv --restart ck
+refused "--restart.*parameter contact_statistics differs" \
+  simulate --particles 400 --density 0.1 --restitution 0.9 --out b.csv --restart ck
+refused "--restart.*dimension differs: checkpoint 2, this run 3" \
+  "${args[@]}" --dim 3 --out b.csv --restart ck
+refused "--restart.*t_end = 1 lies before the checkpoint's time" \
+  "${args[@]}" --t-end 1 --out b.csv --restart ck
+magic=20 format=11  # bytes of the lines "molchaos checkpoint" and "format = 1"
+{ printf 'molchaos checkpoint\nformat = 9\n'; tail -c +$((magic + format + 1)) ck; } >other_format
+refused "--restart.*format differs: checkpoint 9, this run 1" \
+  "${args[@]}" --out b.csv --restart other_format
+version=$(head -3 ck | tail -1 | wc -c)
+{ printf 'molchaos checkpoint\nformat = 1\nversion = 0.0.1+other\n'
+  tail -c +$((magic + format + version + 1)) ck; } >other_version
+refused "--restart.*written by molchaos 0.0.1\+other, this is" \
+  "${args[@]}" --out b.csv --restart other_version
+size=$(wc -c <ck)
+head -c $((size - 100)) ck >truncated
+refused "--restart.*truncated payload" "${args[@]}" --out b.csv --restart truncated
+cp ck flipped
+printf '\x5a' | dd of=flipped bs=1 seek=$((size - 20)) conv=notrunc 2>/dev/null
+refused "--restart.*checksum mismatch" "${args[@]}" --out b.csv --restart flipped
+refused "--restart.*not a molchaos checkpoint" "${args[@]}" --out b.csv --restart a.csv
+refused "--restart.*no checkpoint file 'missing'" "${args[@]}" --out b.csv --restart missing
+refused "--checkpoint-interval: needs --checkpoint FILE" \
+  "${args[@]}" --out b.csv --checkpoint-interval 5
+[ ! -e b.csv ] || { echo "FAIL: an output written by a refused restart"; exit 1; }
+[ "$failures" -eq 0 ] || { echo "FAIL: $failures refusals wrong"; exit 1; }
+echo "ok: every unfit checkpoint refused with a message naming what differs"

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Usage: config_files.sh MOLCHAOS EXPECT_USAGE_ERROR
+# Input files: a run repeated from its own CSV header (simulate --config run.csv) and from the TOML
+# that --write-config wrote gives the same bytes; flags override the file; every subcommand reads
+# one; unknown keys and out-of-range values are usage errors naming the key and the allowed range.
+set -u
+bin=$(realpath "$1")
+expect=$(realpath "$2")
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+cd "$dir" || exit 1
+fail() { echo "FAIL: $*"; exit 1; }
+"$bin" simulate --dim 3 --particles 500 --density 0.2 --restitution 0.85 --randomize paper \
+  --contacts --seed 11 --t-end 30 --snapshot-times 1 2.5 --tc 1e-4 --samples-per-decade 7 \
+  --out run.csv --write-config run.toml --quiet 2>/dev/null || fail "first run"
+"$bin" simulate --config run.csv --out again.csv --quiet 2>/dev/null || fail "run from run.csv"
+cmp run.csv again.csv || fail "the run repeated from its CSV header differs"
+cmp run.snapshot1.csv again.snapshot1.csv || fail "its snapshot differs"
+"$bin" simulate --config run.toml --out toml.csv --quiet 2>/dev/null || fail "run from run.toml"
+cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differs"
+echo "ok: a run repeated from its CSV and from its TOML, byte for byte"
+"$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
+  fail "run with flags over the file"
+grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
+  grep -qx "# restitution = 0.85" other.csv || fail "flags do not override the file"
+echo "ok: flags override the file"
+cat >sweep.toml <<'TOML'
+# a sweep from a file
+density = [0.05, 0.1]      # two state points
+randomize = ["none", "flux"]
+particles = 300
+seeds = 1
+t-end-tau0 = 0.5
+TOML
+"$bin" sweep --config sweep.toml --cache cache --out sweep.csv --threads 1 >/dev/null 2>&1 ||
+  fail "sweep from a file"
+[ "$(grep -c '^0\.[05]*1*,' sweep.csv)" -eq 4 ] || fail "sweep.csv lacks the 4 state points"
+printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
+"$bin" theory --config theory.toml | grep -q '"restitution": 0.8' || fail "theory from a file"
+echo "ok: sweep and theory read their options from files"
+
+failures=0
+refused() {  # refused REGEX ARGS...
+  local regex=$1
+  shift
+  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
+  head -1 out.txt
+}
+printf 'densty = 0.1\n' >typo.toml
+refused "--config: typo.toml: unknown key 'densty' for simulate; allowed: dim, particles, density" \
+  simulate --config typo.toml
+printf 'restitution = 1.5\n' >range.toml
+refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is outside the allowed range \(0, 1\]" \
+  simulate --config range.toml
+printf 'contacts = yes\n' >flag.toml
+refused "key 'contacts'.*true or false" simulate --config flag.toml
+printf '[simulate]\ndensity = 0.1\n' >table.toml
+refused "table.toml line 1: tables are not used" simulate --config table.toml
+printf 'seeds = 0\n' >seeds.toml
+refused "key 'seeds'.*--seeds.*\[1, 100000\]" sweep --config seeds.toml
+printf 'b = 2\n' >b.toml
+refused "--b: value 2 is outside the allowed range \[-2, 0.671216\)" theory --config b.toml
+refused "unknown key 'density' for reproduce" reproduce --config sweep.toml
+refused "--config.*missing.toml" simulate --config missing.toml
+[ "$failures" -eq 0 ] || fail "$failures errors wrong"
+echo "ok: unknown keys and out-of-range values named with their allowed range"
