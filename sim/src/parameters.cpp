@@ -20,21 +20,15 @@ std::string number(double x) { return message_number(x); }
 
 }  // namespace
 
+// The names live with the row of the parameter table.
 std::string_view to_string(Randomization mode) {
-  switch (mode) {
-    case Randomization::none:
-      return "none";
-    case Randomization::paper:
-      return "paper";
-    case Randomization::flux:
-      return "flux";
-  }
-  return "none";
+  const auto index = static_cast<std::size_t>(mode);
+  return index < k_randomization_names.size() ? k_randomization_names[index] : "none";
 }
 
 std::optional<Randomization> parse_randomization(std::string_view text) {
-  for (auto mode : {Randomization::none, Randomization::paper, Randomization::flux})
-    if (text == to_string(mode)) return mode;
+  for (std::size_t i = 0; i < k_randomization_names.size(); ++i)
+    if (text == k_randomization_names[i]) return static_cast<Randomization>(i);
   return std::nullopt;
 }
 
