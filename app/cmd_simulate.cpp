@@ -54,6 +54,14 @@ void run_simulate(const SimulateOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
   }
+  // DSMC keeps velocities only: there are no configurations to write.
+  if (p.method == sim::Method::dsmc)
+    for (const auto& [flag, path] :
+         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
+      if (!path->empty())
+        throw UsageError(flag,
+                         "not allowed with --method dsmc (it has no positions); allowed "
+                         "with --method edmd");
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
   sim::ProgressReporter progress;
@@ -84,8 +92,7 @@ void run_simulate(const SimulateOptions& options) {
                sim::stop_message(result).c_str(), options.out.c_str());
   if (result.stop_reason == sim::StopReason::collapse)
     throw std::runtime_error("run stopped early: " + sim::stop_message(result) +
-                             " (partial results in " +
-                             options.out + ")");
+                             " (partial results in " + options.out + ")");
 }
 
 }  // namespace

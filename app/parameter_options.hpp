@@ -91,9 +91,21 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
 template <class T>
 CLI::Option* add_parameter_option(CLI::App* cmd, std::string_view name, T& target) {
   const sim::ParameterInfo& info = parameter_row(name);
-  return cmd->add_option(std::string(info.flag), target, parameter_help(info))
-      ->check(parameter_check(info))
-      ->capture_default_str();
+  if constexpr (std::is_enum_v<T>) {  // a choice: by name
+    return cmd
+        ->add_option_function<std::string>(
+            std::string(info.flag),
+            [&target, &info](const std::string& text) {
+              target = static_cast<T>(*sim::find_choice(info, text));
+            },
+            parameter_help(info))
+        ->check(parameter_check(info))
+        ->default_str(std::string(info.choices[static_cast<std::size_t>(target)]));
+  } else {
+    return cmd->add_option(std::string(info.flag), target, parameter_help(info))
+        ->check(parameter_check(info))
+        ->capture_default_str();
+  }
 }
 
 /// The option of row `name` taking a comma-separated list (a sweep over that parameter).

@@ -149,6 +149,10 @@ std::string format_value(const Parameters& p, const ParameterInfo& info) {
       info.field);
 }
 
+bool omitted(const Parameters& p, const ParameterInfo& info) {
+  return info.omitted_at_default && format_value(p, info) == format_value(Parameters{}, info);
+}
+
 void parse_value(Parameters& p, const ParameterInfo& info, std::string_view text) {
   auto fail = [&] {
     throw std::invalid_argument(std::string(info.name) + ": cannot read '" + std::string(text) +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
@@ -44,6 +45,7 @@ double box_side(const Parameters& p) {
 void validate(const Parameters& p) {
   // Each field against its own range (the table), then the bounds that join several fields.
   for (const ParameterInfo& info : parameter_table()) check_range(p, info);
+  if (p.method == Method::dsmc) validate_dsmc(p);
   if (p.randomize != Randomization::none && p.particles < 4)
     out_of_range("particles", std::to_string(p.particles),
                  "[4, 100000000] with randomize = " + std::string(to_string(p.randomize)) +

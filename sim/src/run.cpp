@@ -7,6 +7,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/version.hpp"
 
@@ -109,6 +110,11 @@ double enskog_collision_frequency(int dimension, double density, double temperat
 
 RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress) {
   validate(p);
+  if (p.method == Method::dsmc) {  // the one place the method is chosen
+    ProgressCallback fraction;
+    if (progress) fraction = [&](double f) { progress({f, 0, 0, 0.0}); };
+    return run_dsmc(p, fraction);
+  }
   if (p.contact_statistics)
     return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress)
                             : run_d<3, ContactStatistics>(p, progress);

@@ -59,6 +59,7 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.relax_collisions_per_particle = s.relax_collisions_per_particle;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
+          p.method = s.method;
           runs.push_back(p);
         }
     }

@@ -24,7 +24,7 @@ namespace molchaos::sim {
 using ParameterField =
     std::variant<int Parameters::*, std::int64_t Parameters::*, std::uint64_t Parameters::*,
                  double Parameters::*, bool Parameters::*, Randomization Parameters::*,
-                 std::vector<double> Parameters::*>;
+                 Method Parameters::*, std::vector<double> Parameters::*>;
 
 /// Allowed values of a number, or of each element of a list (static part only: bounds that depend
 /// on other fields, such as close packing or snapshot_times <= t_end, are checked by validate()).
@@ -53,6 +53,7 @@ struct ParameterInfo {
 
 /// The names of the choices, index = enum value; the one place they are spelled.
 inline constexpr std::array<std::string_view, 3> k_randomization_names{"none", "paper", "flux"};
+inline constexpr std::array<std::string_view, 2> k_method_names{"edmd", "dsmc"};
 
 namespace detail {
 constexpr double k_inf = std::numeric_limits<double>::infinity();
@@ -60,10 +61,10 @@ constexpr double k_inf = std::numeric_limits<double>::infinity();
 
 /// Every field of Parameters, in the order of the CSV header and the MPI message. Defaults are
 /// the member initializers of Parameters (default_parameters()).
-inline const std::array<ParameterInfo, 15>& parameter_table() {
+inline const std::array<ParameterInfo, 16>& parameter_table() {
   using detail::k_inf;
   using P = Parameters;
-  static const std::array<ParameterInfo, 15> table{{
+  static const std::array<ParameterInfo, 16> table{{
       {"dimension", "--dim", &P::dimension, {2, true, 3, true}, "", "Dimension d"},
       {"particles",
        "--particles",
@@ -146,6 +147,15 @@ inline const std::array<ParameterInfo, 15>& parameter_table() {
        {0, true, 1, false},
        "T0",
        "Stop when T/T0 falls below (0 = no)"},
+      {"method",
+       "--method",
+       &P::method,
+       {},
+       "",
+       "Simulation method: edmd (event-driven MD), dsmc (DSMC of the Enskog-Boltzmann equation; "
+       "velocities only)",
+       k_method_names,
+       true},
   }};
   return table;
 }
@@ -175,6 +185,10 @@ std::string choice_list(const ParameterInfo& info);
 /// The field's value as text: shortest round-trip decimals, true/false, mode names, a
 /// space-separated list. This is what the CSV header and the cache key print.
 std::string format_value(const Parameters& p, const ParameterInfo& info);
+
+/// True if the row is omitted_at_default and p holds its default: the CSV header and the cache key
+/// then leave the row out.
+bool omitted(const Parameters& p, const ParameterInfo& info);
 
 /// Inverse of format_value; throws std::invalid_argument("<name>: cannot read '<text>'").
 void parse_value(Parameters& p, const ParameterInfo& info, std::string_view text);
