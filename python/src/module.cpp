@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/cooling.hpp"
@@ -123,7 +124,12 @@ sim::Parameters parameters_from(const py::kwargs& kwargs) {
       p.max_collisions = keyword_as<std::uint64_t>(name, v);
     else if (name == "min_temperature")
       p.min_temperature = keyword_as<double>(name, v);
-    else
+    else if (name == "method") {
+      const sim::ParameterInfo& row = *sim::find_parameter("method");
+      const auto index = sim::find_choice(row, keyword_as<std::string>(name, v));
+      if (!index) throw py::value_error("method: must be one of " + sim::choice_list(row));
+      sim::set_choice_index(p, row, *index);
+    } else
       throw py::type_error("simulate() got an unexpected keyword argument '" + name + "'");
   }
   try {
@@ -151,6 +157,7 @@ py::dict parameters_dict(const sim::Parameters& p) {
   d["snapshot_times"] = p.snapshot_times;
   d["max_collisions"] = p.max_collisions;
   d["min_temperature"] = p.min_temperature;
+  d["method"] = sim::format_value(p, *sim::find_parameter("method"));
   return d;
 }
 

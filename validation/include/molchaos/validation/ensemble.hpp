@@ -29,8 +29,8 @@ struct EnsembleSpec {
   int samples_per_decade = 40;
   double relax_collisions_per_particle = 20.0;
   bool contact_statistics = true;
-  /// Every run of the sweep uses this method (one method per sweep: the summary has no method
-  /// column).
+  /// Every run of the sweep uses this method (one method per sweep: the summary names it in its
+  /// header, not in a column).
   sim::Method method = sim::Method::edmd;
 };
 
