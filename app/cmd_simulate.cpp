@@ -101,7 +101,9 @@ void add_simulate_command(CLI::App& app) {
   auto options = std::make_shared<SimulateOptions>();
   sim::Parameters& p = options->parameters;
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Event-driven MD of inelastic hard disks/spheres; writes the T(t) time series");
+      "simulate",
+      "Event-driven MD (or DSMC, --method dsmc) of inelastic hard disks/spheres; writes the T(t) "
+      "time series");
   add_parameter_options(cmd, p);  // every row of the parameter table
   cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
 #ifdef MOLCHAOS_HAVE_IO
