@@ -100,6 +100,14 @@ void run_simulate(const SimulateOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
   }
+  // DSMC keeps velocities only: there are no configurations to write.
+  if (p.method == sim::Method::dsmc)
+    for (const auto& [flag, path] :
+         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
+      if (!path->empty())
+        throw UsageError(flag,
+                         "not allowed with --method dsmc (it has no positions); allowed "
+                         "with --method edmd");
 
   if (!options.write_config.empty()) {
     require_writable_file("--write-config", options.write_config, false);
@@ -150,7 +158,9 @@ void add_simulate_command(CLI::App& app) {
   auto options = std::make_shared<SimulateOptions>();
   sim::Parameters& p = options->parameters;
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Event-driven MD of inelastic hard disks/spheres; writes the T(t) time series");
+      "simulate",
+      "Event-driven MD (or DSMC, --method dsmc) of inelastic hard disks/spheres; writes the T(t) "
+      "time series");
   add_parameter_options(cmd, p);  // every row of the parameter table
   cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
 #ifdef MOLCHAOS_HAVE_IO

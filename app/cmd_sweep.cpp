@@ -109,6 +109,7 @@ void add_sweep_command(CLI::App& app) {
   add_parameter_list_option(cmd, "density", o->spec.densities);
   add_parameter_list_option(cmd, "restitution", o->spec.restitutions);
   add_parameter_list_option(cmd, "randomize", o->modes);
+  add_parameter_option(cmd, "method", o->spec.method);
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
       ->check(integer_in(1, 100000))
       ->capture_default_str();

@@ -14,14 +14,15 @@
 
 namespace molchaos::app {
 
-/// Accepts the names of the randomization modes.
-inline CLI::Validator randomization_name() {
+/// Accepts the names of a choice row's values.
+inline CLI::Validator choice_name(const sim::ParameterInfo& info) {
+  const std::string list = sim::choice_list(info);
   return CLI::Validator(
-      [](std::string& text) -> std::string {
-        if (sim::parse_randomization(text)) return {};
-        return "unknown value '" + text + "'; allowed: none, paper, flux";
+      [&info, list](std::string& text) -> std::string {
+        if (sim::find_choice(info, text)) return {};
+        return "unknown value '" + text + "'; allowed: " + list;
       },
-      "one of none, paper, flux");
+      "one of " + list);
 }
 
 /// The check of one value (or one list element) of a row.
@@ -34,8 +35,8 @@ inline CLI::Validator parameter_check(const sim::ParameterInfo& info) {
           return unsigned_integer();
         else if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::int64_t>)
           return integer_in(static_cast<long long>(r.lo), static_cast<long long>(r.hi));
-        else if constexpr (std::is_same_v<T, sim::Randomization>)
-          return randomization_name();
+        else if constexpr (std::is_enum_v<T>)
+          return choice_name(info);
         else
           return real_in(r.lo, r.lo_closed, r.hi, r.hi_closed);  // double, list of doubles
       },
@@ -65,13 +66,15 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
           using T = std::remove_cvref_t<decltype(target)>;
           if constexpr (std::is_same_v<T, bool>) {
             cmd->add_flag(flag, target, help);
-          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
+          } else if constexpr (std::is_enum_v<T>) {
             cmd->add_option_function<std::string>(
                    flag,
-                   [&target](const std::string& text) { target = *sim::parse_randomization(text); },
+                   [&p, &info](const std::string& text) {
+                     sim::set_choice_index(p, info, *sim::find_choice(info, text));
+                   },
                    help)
                 ->check(parameter_check(info))
-                ->default_str(std::string(sim::to_string(target)));
+                ->default_str(sim::format_value(p, info));
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
             cmd->add_option(flag, target, help)->check(parameter_check(info));
           } else {
@@ -88,9 +91,21 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
 template <class T>
 CLI::Option* add_parameter_option(CLI::App* cmd, std::string_view name, T& target) {
   const sim::ParameterInfo& info = parameter_row(name);
-  return cmd->add_option(std::string(info.flag), target, parameter_help(info))
-      ->check(parameter_check(info))
-      ->capture_default_str();
+  if constexpr (std::is_enum_v<T>) {  // a choice: by name
+    return cmd
+        ->add_option_function<std::string>(
+            std::string(info.flag),
+            [&target, &info](const std::string& text) {
+              target = static_cast<T>(*sim::find_choice(info, text));
+            },
+            parameter_help(info))
+        ->check(parameter_check(info))
+        ->default_str(std::string(info.choices[static_cast<std::size_t>(target)]));
+  } else {
+    return cmd->add_option(std::string(info.flag), target, parameter_help(info))
+        ->check(parameter_check(info))
+        ->capture_default_str();
+  }
 }
 
 /// The option of row `name` taking a comma-separated list (a sweep over that parameter).

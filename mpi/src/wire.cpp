@@ -75,8 +75,8 @@ std::string encode(const JobMessage& job) {
           using T = std::remove_cvref_t<decltype(value)>;
           if constexpr (std::is_same_v<T, bool>) {
             w.put(static_cast<std::uint8_t>(value ? 1 : 0));
-          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
-            w.put(static_cast<std::int32_t>(value));
+          } else if constexpr (std::is_enum_v<T>) {  // a choice: its index
+            w.put(static_cast<std::int32_t>(sim::choice_index(job.parameters, info)));
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
             w.put<std::uint64_t>(value.size());
             for (double x : value) w.put(x);
@@ -99,11 +99,11 @@ JobMessage decode_job(std::string_view bytes) {
           using T = std::remove_cvref_t<decltype(value)>;
           if constexpr (std::is_same_v<T, bool>) {
             value = r.get<std::uint8_t>() != 0;
-          } else if constexpr (std::is_same_v<T, sim::Randomization>) {
-            const auto mode = r.get<std::int32_t>();
-            if (mode < 0 || mode > static_cast<std::int32_t>(sim::Randomization::flux))
-              throw std::runtime_error("MPI message: unknown randomization mode");
-            value = static_cast<sim::Randomization>(mode);
+          } else if constexpr (std::is_enum_v<T>) {
+            const auto index = r.get<std::int32_t>();
+            if (index < 0 || static_cast<std::size_t>(index) >= info.choices.size())
+              throw std::runtime_error("MPI message: unknown choice of " + std::string(info.name));
+            value = static_cast<T>(index);
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
             const auto count = r.get<std::uint64_t>();
             if (count > bytes.size() / sizeof(double))

@@ -62,10 +62,15 @@ std::vector<std::string> split(const std::string& line, char sep) {
 
 void write_csv(const RunResult& r, std::ostream& out) {
   const Parameters& p = r.parameters;
-  out << "# molchaos simulate: event-driven MD of inelastic hard spheres (sigma = m = 1, T0 = 1)\n"
+  out << (p.method == Method::dsmc ? "# molchaos simulate: DSMC of the homogeneous "
+                                     "Enskog-Boltzmann equation of inelastic "
+                                     "hard spheres (sigma = m = 1, T0 = 1)\n"
+                                   : "# molchaos simulate: event-driven MD of inelastic hard "
+                                     "spheres (sigma = m = 1, T0 = "
+                                     "1)\n")
       << "# version = " << r.version << "\n";
   for (const ParameterInfo& info : parameter_table())
-    out << "# " << info.name << " = " << format_value(p, info) << "\n";
+    if (!omitted(p, info)) out << "# " << info.name << " = " << format_value(p, info) << "\n";
   out << "# stop_reason = " << stop_message(r) << "\n"
       << "# collisions = " << r.collisions << "\n"
       << "# events = " << r.events << "\n"
@@ -112,6 +117,8 @@ RunResult read_csv(std::istream& in) {
   RunResult r;
   Parameters& p = r.parameters;
   for (const ParameterInfo& info : parameter_table()) {
+    if (info.omitted_at_default && !header.contains(std::string(info.name)))
+      continue;  // written without the row, or at its default: p keeps the default
     try {
       parse_value(p, info, field(std::string(info.name)));
     } catch (const std::invalid_argument& e) {

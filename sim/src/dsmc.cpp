@@ -2,8 +2,6 @@
 // exponential clock), the collision, the bookkeeping of units and bounds, and run_dsmc.
 #include "molchaos/sim/dsmc.hpp"
 
-#include "molchaos/sim/contact_statistics.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,6 +9,7 @@
 #include <stdexcept>
 
 #include "molchaos/sim/collision.hpp"
+#include "molchaos/sim/contact_statistics.hpp"
 #include "molchaos/sim/dsmc_contact.hpp"
 #include "molchaos/version.hpp"
 
@@ -28,12 +27,17 @@ constexpr double k_bound_margin = 1.0 + 1e-12;
 }  // namespace
 
 void validate_dsmc(const Parameters& p) {
+  if (p.randomize != Randomization::none)
+    throw std::invalid_argument(
+        "randomize: value " + std::string(to_string(p.randomize)) +
+        " is not allowed with method = dsmc (a shuffle only permutes velocities, which leaves the "
+        "DSMC state unchanged); allowed value none");
   if (p.tc != 0)
     throw std::invalid_argument("tc: value " + std::to_string(p.tc) +
-                                " is not allowed with the DSMC method; allowed value 0");
+                                " is not allowed with method = dsmc; allowed value 0");
   if (!p.snapshot_times.empty())
     throw std::invalid_argument(
-        "snapshot_times: not allowed with the DSMC method (it has no positions); allowed: none");
+        "snapshot_times: not allowed with method = dsmc (it has no positions); allowed: none");
 }
 
 template <int D>
@@ -234,8 +238,7 @@ bool DsmcGas<D>::collide(std::uint32_t i, std::uint32_t j, const double* g, doub
   draw_contact_direction<D>(g, std::sqrt(g2), rng, e);
   double before = 0;
   for (int a = 0; a < D; ++a) before += ui[a] * ui[a] + uj[a] * uj[a];
-  if (contacts_on_)
-    accumulate<D>(contacts_, ui, uj, e, sum_u2_ / (static_cast<double>(n_) * D));
+  if (contacts_on_) accumulate<D>(contacts_, ui, uj, e, sum_u2_ / (static_cast<double>(n_) * D));
   double normal_velocity = 0;
   for (int a = 0; a < D; ++a) normal_velocity += g[a] * e[a];
   rule_.apply<D>(ui, uj, e, normal_velocity, /*elastic=*/false);

@@ -63,8 +63,8 @@ std::string range_text(const ParameterInfo& info) {
           text += std::to_string(static_cast<long long>(r.hi));
           text += ']';
           return text;
-        } else if constexpr (std::is_same_v<T, Randomization>) {
-          return "{none, paper, flux}";
+        } else if constexpr (std::is_enum_v<T>) {
+          return "{" + choice_list(info) + "}";
         } else if constexpr (std::is_same_v<T, bool>) {
           return "{false, true}";
         } else {
@@ -79,6 +79,51 @@ std::string range_text(const ParameterInfo& info) {
       info.field);
 }
 
+std::size_t choice_index(const Parameters& p, const ParameterInfo& info) {
+  return std::visit(
+      [&](auto member) -> std::size_t {
+        using T = std::remove_cvref_t<decltype(p.*member)>;
+        if constexpr (std::is_enum_v<T>) {
+          const auto index = static_cast<long long>(p.*member);
+          if (index < 0 || index >= static_cast<long long>(info.choices.size()))
+            throw std::invalid_argument(std::string(info.name) + ": value " +
+                                        std::to_string(index) + " is outside the allowed range {" +
+                                        choice_list(info) + "}");
+          return static_cast<std::size_t>(index);
+        } else {
+          return 0;
+        }
+      },
+      info.field);
+}
+
+void set_choice_index(Parameters& p, const ParameterInfo& info, std::size_t index) {
+  if (index >= info.choices.size())
+    throw std::invalid_argument(std::string(info.name) + ": choice " + std::to_string(index) +
+                                " is outside the allowed range {" + choice_list(info) + "}");
+  std::visit(
+      [&](auto member) {
+        using T = std::remove_cvref_t<decltype(p.*member)>;
+        if constexpr (std::is_enum_v<T>) p.*member = static_cast<T>(index);
+      },
+      info.field);
+}
+
+std::optional<std::size_t> find_choice(const ParameterInfo& info, std::string_view text) {
+  for (std::size_t i = 0; i < info.choices.size(); ++i)
+    if (info.choices[i] == text) return i;
+  return std::nullopt;
+}
+
+std::string choice_list(const ParameterInfo& info) {
+  std::string list;
+  for (std::string_view name : info.choices) {
+    if (!list.empty()) list += ", ";
+    list += name;
+  }
+  return list;
+}
+
 std::string format_value(const Parameters& p, const ParameterInfo& info) {
   return std::visit(
       [&](auto member) -> std::string {
@@ -90,8 +135,8 @@ std::string format_value(const Parameters& p, const ParameterInfo& info) {
           return std::to_string(value);
         } else if constexpr (std::is_same_v<T, double>) {
           return round_trip(value);
-        } else if constexpr (std::is_same_v<T, Randomization>) {
-          return std::string(to_string(value));
+        } else if constexpr (std::is_enum_v<T>) {
+          return std::string(info.choices[choice_index(p, info)]);
         } else {
           std::string list;
           for (double t : value) {
@@ -102,6 +147,10 @@ std::string format_value(const Parameters& p, const ParameterInfo& info) {
         }
       },
       info.field);
+}
+
+bool omitted(const Parameters& p, const ParameterInfo& info) {
+  return info.omitted_at_default && format_value(p, info) == format_value(Parameters{}, info);
 }
 
 void parse_value(Parameters& p, const ParameterInfo& info, std::string_view text) {
@@ -116,10 +165,10 @@ void parse_value(Parameters& p, const ParameterInfo& info, std::string_view text
         if constexpr (std::is_same_v<T, bool>) {
           if (text != "true" && text != "false") fail();
           value = text == "true";
-        } else if constexpr (std::is_same_v<T, Randomization>) {
-          const auto mode = parse_randomization(text);
-          if (!mode) fail();
-          value = *mode;
+        } else if constexpr (std::is_enum_v<T>) {
+          const auto index = find_choice(info, text);
+          if (!index) fail();
+          value = static_cast<T>(*index);
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
           value.clear();
           std::size_t at = 0;
@@ -157,10 +206,10 @@ void check_range(const Parameters& p, const ParameterInfo& info) {
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
           for (double x : value)
             if (!inside(x, info.range)) out_of_range(message_number(x));
-        } else {
-          if (value != Randomization::none && value != Randomization::paper &&
-              value != Randomization::flux)
-            out_of_range(std::to_string(static_cast<int>(value)));
+        } else {  // a choice
+          const auto index = static_cast<long long>(value);
+          if (index < 0 || index >= static_cast<long long>(info.choices.size()))
+            out_of_range(std::to_string(index));
         }
       },
       info.field);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
@@ -20,21 +21,15 @@ std::string number(double x) { return message_number(x); }
 
 }  // namespace
 
+// The names live with the row of the parameter table.
 std::string_view to_string(Randomization mode) {
-  switch (mode) {
-    case Randomization::none:
-      return "none";
-    case Randomization::paper:
-      return "paper";
-    case Randomization::flux:
-      return "flux";
-  }
-  return "none";
+  const auto index = static_cast<std::size_t>(mode);
+  return index < k_randomization_names.size() ? k_randomization_names[index] : "none";
 }
 
 std::optional<Randomization> parse_randomization(std::string_view text) {
-  for (auto mode : {Randomization::none, Randomization::paper, Randomization::flux})
-    if (text == to_string(mode)) return mode;
+  for (std::size_t i = 0; i < k_randomization_names.size(); ++i)
+    if (text == k_randomization_names[i]) return static_cast<Randomization>(i);
   return std::nullopt;
 }
 
@@ -50,6 +45,7 @@ double box_side(const Parameters& p) {
 void validate(const Parameters& p) {
   // Each field against its own range (the table), then the bounds that join several fields.
   for (const ParameterInfo& info : parameter_table()) check_range(p, info);
+  if (p.method == Method::dsmc) validate_dsmc(p);
   if (p.randomize != Randomization::none && p.particles < 4)
     out_of_range("particles", std::to_string(p.particles),
                  "[4, 100000000] with randomize = " + std::string(to_string(p.randomize)) +

@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <type_traits>
 
 #include "molchaos/sim/checkpoint.hpp"
+#include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/version.hpp"
@@ -192,6 +194,16 @@ double enskog_collision_frequency(int dimension, double density, double temperat
 std::optional<RunResult> run_with_checkpoints(const Parameters& p, const ProgressReporter& progress,
                                               const CheckpointOptions& checkpoints) {
   validate(p);
+  if (p.method == Method::dsmc) {  // the one place the method is chosen
+    // DSMC runs take seconds where MD runs take hours; its state has no checkpoint format.
+    if (!checkpoints.path.empty() || !checkpoints.restart.empty())
+      throw std::invalid_argument(
+          "checkpoint: checkpoints and restarts are made by the event-driven method only "
+          "(method = edmd), not by method = dsmc");
+    ProgressCallback fraction;
+    if (progress) fraction = [&](double f) { progress({f, 0, 0, 0.0}); };
+    return run_dsmc(p, fraction);
+  }
   if (p.contact_statistics)
     return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress, checkpoints)
                             : run_d<3, ContactStatistics>(p, progress, checkpoints);

@@ -86,6 +86,27 @@ def test_simulate_bad_parameter_names_it(name, value):
         molchaos.simulate(**kwargs)
 
 
+def test_simulate_dsmc_equals_cli_run(molchaos_bin, tmp_path):
+    run = molchaos.simulate(**SMALL, method="dsmc")
+    assert run["parameters"]["method"] == "dsmc"
+    out = tmp_path / "dsmc.csv"
+    subprocess.run(
+        [molchaos_bin, "simulate", "--method", "dsmc", "--dim", "2", "--particles", "200",
+         "--density", "0.05", "--restitution", "0.9", "--seed", "3", "--t-end", "20",
+         "--relax", "5", "--samples-per-decade", "5", "--quiet", "--out", str(out)],
+        check=True, capture_output=True)
+    frame, _ = molchaos.read_run_csv(out)
+    np.testing.assert_array_equal(frame["T"].to_numpy(), run["T"])
+    assert molchaos.simulate(**SMALL)["parameters"]["method"] == "edmd"
+
+
+def test_simulate_method_refuses_unknown_and_shuffles():
+    with pytest.raises(ValueError, match="method"):
+        molchaos.simulate(**SMALL, method="md")
+    with pytest.raises(ValueError, match="randomize"):
+        molchaos.simulate(**SMALL, method="dsmc", randomize="flux")
+
+
 def test_simulate_unknown_keyword():
     with pytest.raises(TypeError, match="restitutoin"):
         molchaos.simulate(restitutoin=0.9)

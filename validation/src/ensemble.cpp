@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/theory/cooling.hpp"
 
 namespace molchaos::validation {
@@ -59,6 +60,7 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.relax_collisions_per_particle = s.relax_collisions_per_particle;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
+          p.method = s.method;
           runs.push_back(p);
         }
     }
@@ -120,6 +122,11 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
                        s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
+    // Like a run's header: the method line only when it is not the default (edmd).
+    sim::Parameters run;
+    run.method = s.method;
+    const sim::ParameterInfo& method = *sim::find_parameter("method");
+    if (!sim::omitted(run, method)) out << "# method = " << sim::format_value(run, method) << "\n";
     out << "density,restitution,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";

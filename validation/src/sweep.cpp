@@ -34,7 +34,8 @@ std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index) {
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version) {
   std::string s = "version=" + version + ";";
   for (const sim::ParameterInfo& info : sim::parameter_table())
-    s += std::string(info.name) + "=" + sim::format_value(p, info) + ";";
+    if (!sim::omitted(p, info))
+      s += std::string(info.name) + "=" + sim::format_value(p, info) + ";";
   return s;
 }
 

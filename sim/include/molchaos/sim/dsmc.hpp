@@ -86,7 +86,7 @@ class DsmcGas {
   static constexpr unsigned k_lookahead = 16;
 
   std::uint32_t n_ = 0;
-  ConstantRestitution rule_;  // the MD's collision rule
+  ConstantRestitution rule_;     // the MD's collision rule
   double rate_per_bound_ = 0.0;  // Λ / (2B/s): n g2 β_d N / 2
   bool contacts_on_ = false;
   std::uint64_t collision_limit_ = 0;
@@ -115,13 +115,15 @@ class DsmcGas {
 /// One DSMC run with the MD run's interface (run.hpp): validates p (std::invalid_argument; tc > 0
 /// and snapshot_times are refused, see below), samples on sample_times(p), returns the same
 /// RunResult. relax_collisions_per_particle is ignored: the initial Maxwell state already is the
-/// elastic gas's stationary state (there is no positional structure to melt). The velocity
-/// shuffles (randomize) permute velocities among particles; without positions the state is the
-/// multiset of velocities, which a permutation leaves unchanged, so every mode runs the same gas.
+/// elastic gas's stationary state (there is no positional structure to melt). p.method is not
+/// read: sim::run calls this for method = dsmc, and tests may call it directly.
 RunResult run_dsmc(const Parameters& p, const ProgressCallback& progress = {});
 
-/// The checks that run_dsmc adds to validate(p): tc = 0 (the TC model needs per-particle collision
-/// histories that this method does not keep) and no snapshot_times (there are no positions).
+/// The checks that DSMC adds to validate(p) (validate calls it for method = dsmc): randomize =
+/// none (the shuffles permute velocities among particles; without positions the state is the
+/// multiset of velocities, which a permutation leaves unchanged, so a shuffled run would be the
+/// plain one under another name), tc = 0 (the TC model needs per-particle collision histories
+/// that this method does not keep) and no snapshot_times (there are no positions).
 void validate_dsmc(const Parameters& p);
 
 }  // namespace molchaos::sim

@@ -21,6 +21,12 @@ namespace molchaos::sim {
 ///         which keeps an elastic gas in equilibrium (see shuffle.hpp for the derivation).
 enum class Randomization { none, paper, flux };
 
+/// How the cooling gas is simulated.
+///  edmd: event-driven molecular dynamics of hard disks/spheres (positions and velocities).
+///  dsmc: direct simulation Monte Carlo of the homogeneous Enskog–Boltzmann equation (velocities
+///        only, molecular chaos by construction; see dsmc.hpp).
+enum class Method { edmd, dsmc };
+
 std::string_view to_string(Randomization mode);
 std::optional<Randomization> parse_randomization(std::string_view text);
 
@@ -40,6 +46,7 @@ struct Parameters {
   std::vector<double> snapshot_times;
   std::uint64_t max_collisions = 0;  // 0 = unlimited
   double min_temperature = 0.0;      // stop when T/T0 falls below (0 = never)
+  Method method = Method::edmd;
 };
 
 /// Densest allowed reduced density n = N sigma^d / V (close packing) for dimension d.

@@ -29,6 +29,9 @@ struct EnsembleSpec {
   int samples_per_decade = 40;
   double relax_collisions_per_particle = 20.0;
   bool contact_statistics = true;
+  /// Every run of the sweep uses this method (one method per sweep: the summary names it in its
+  /// header, not in a column).
+  sim::Method method = sim::Method::edmd;
 };
 
 /// Throws std::invalid_argument naming the field for an empty or out-of-range spec.

@@ -17,7 +17,8 @@ namespace molchaos::validation {
 std::uint64_t derive_seed(std::uint64_t base_seed, std::uint64_t index);
 
 /// Canonical text of the code version and every parameter of the table, "name=value;" with
-/// values as the CSV header prints them (shortest round-trip decimals).
+/// values as the CSV header prints them (shortest round-trip decimals); a row added later is left
+/// out at its default (ParameterInfo::omitted_at_default), so older entries keep their keys.
 std::string canonical_parameters(const sim::Parameters& p, const std::string& version);
 
 /// Cache file name: 16 hex digits of a 64-bit FNV-1a hash of canonical_parameters().
