@@ -108,6 +108,12 @@ void run_simulate(const SimulateOptions& options) {
         throw UsageError(flag,
                          "not allowed with --method dsmc (it has no positions); allowed "
                          "with --method edmd");
+  if (p.method == sim::Method::dsmc)
+    for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
+                                     std::pair{"--restart", &checkpoints.restart}})
+      if (!path->empty())
+        throw UsageError(flag, "not allowed with --method dsmc (its runs take seconds); allowed "
+                               "with --method edmd");
 
   if (!options.write_config.empty()) {
     require_writable_file("--write-config", options.write_config, false);
