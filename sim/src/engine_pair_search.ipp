@@ -159,10 +159,10 @@ template <int D, class Observer>
   return interior;
 }
 
-// The 3^D cells around i's cell (i's cell included).
+// The 3^D cells around i's cell (i's cell included), x its coordinates.
 template <int D, class Observer>
-[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, int* stencil) const {
-  const int* x = cell_xyz_[i].data();
+[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, const int* x,
+                                                                   int* stencil) const {
   if (interior_cell(x)) {
     for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
   } else {
