@@ -16,6 +16,7 @@
 #endif
 
 #include "molchaos/sim/cell_grid.hpp"
+#include "molchaos/sim/hilbert_curve.hpp"
 #include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/run.hpp"
 
@@ -39,11 +40,21 @@ constexpr double k_micro_fraction = 1e-10;
 // 0.4 per cell beat 0.2, 0.3 and 0.5 at packing 0.1 (fewer crossings, fewer cells to touch).
 template <int D>
 constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
+// Disks whose data outgrow the cache (k_cache_bytes) are memory-bound: each event costs cache
+// misses, so fewer events (wider cells: 4 instead of 6.5 events per collision at n = 0.05) pay
+// more than the extra pair predictions cost (paired wall-clock rates at N = 1e6, n = 0.05:
+// occupancy 2 ran 1.09, 1.23 and 1.37 times as fast as 0.5); the blocks of 16 ints also hold fewer empty
+// slots per particle (32 instead of 64 bytes).
+template <int D>
+constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
 constexpr double k_overlap_tolerance = 1e-10;
-// Software prefetches (of the next event's and of the candidates' records) only pay when the
-// engine's data outgrow a core's L2 cache (2 MB here); below, they are extra instructions
-// (8 % of them for the paper's case, N = 5000, 1 MB).
-constexpr std::size_t k_prefetch_min_bytes = std::size_t{2} << 20;
+// Engine data beyond a core's L2 cache (2 MB here). Software prefetches (of the next event's and
+// of the candidates' records) only pay then; below, they are extra instructions (8 % of them for
+// the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve,
+// and renumbered every k_resort_collisions collisions per particle, as they drift away from
+// their neighbours in memory.
+constexpr std::size_t k_cache_bytes = std::size_t{2} << 20;
+constexpr double k_resort_collisions = 20;
 // Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
 // gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
 constexpr int k_gather_block = 16;
@@ -78,7 +89,7 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
     // Likely the next event's particle: its records load while this event is processed.
-    if (const std::int32_t g = prefetch_ ? calendar_.guess_next(i) : -1; g >= 0) {
+    if (const std::int32_t g = outgrows_cache_ ? calendar_.guess_next(i) : -1; g >= 0) {
       __builtin_prefetch(&part_[g]);
       __builtin_prefetch(&ev_[g]);
       calendar_.prefetch(g);
@@ -107,7 +118,8 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
       collide(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
       if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
-      if (sum_u2_ < rescale_below || clock_.now > k_rebase_time) return Outcome::resync;
+      if (sum_u2_ < rescale_below || clock_.now > k_rebase_time || collisions_ >= resort_at_)
+        return Outcome::resync;
     }
     if (debug_check_every_ != 0 && events_ % debug_check_every_ == 0) check_overlaps();
   }

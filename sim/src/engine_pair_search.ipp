@@ -124,7 +124,7 @@ template <int D, class Observer>
                                                        std::int32_t& partner) const {
   double b = best;
   std::int32_t p = partner;
-  if (prefetch_)
+  if (outgrows_cache_)
     for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
 #if defined(__SSE2__)
   list[count] = i;

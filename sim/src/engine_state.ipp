@@ -16,10 +16,24 @@ Engine<D, Observer>::Engine(const Parameters& p)
   neighbour_lists_ = D == 3 && packing_fraction >= k_neighbour_list_packing &&
                      box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
   shell_ = neighbour_lists_ ? k_shell : 0.0;
-  const double width_target =
-      neighbour_lists_
-          ? 1.0 + 2.0 * shell_
-          : std::max(1.0, std::pow(k_cell_occupancy<D> / p.density, 1.0 / static_cast<double>(D)));
+  const std::size_t n = static_cast<std::size_t>(n_);
+  part_.assign(n, Particle{});
+  id_.resize(n);
+  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
+  ev_.assign(n, EventData{});
+  last_collision_time_.assign(n, -k_inf);
+  auto cell_width_for = [&](double occupancy) {
+    return neighbour_lists_
+               ? 1.0 + 2.0 * shell_
+               : std::max(1.0, std::pow(occupancy / p.density, 1.0 / static_cast<double>(D)));
+  };
+  // Whether the engine's data (with the cells for the cache, blocks of 8 ints) outgrow the cache.
+  const double cells_in_cache = std::pow(std::floor(box_ / cell_width_for(k_cell_occupancy<D>)), D);
+  outgrows_cache_ = static_cast<double>(memory_bytes() + EventCalendar::memory_bytes_for(n_)) +
+                        32.0 * cells_in_cache >
+                    static_cast<double>(k_cache_bytes);
+  const double width_target = cell_width_for(outgrows_cache_ ? k_cell_occupancy_beyond_cache<D>
+                                                             : k_cell_occupancy<D>);
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
   if (!neighbour_lists_)
     cells_per_side_ = std::max(cells_per_side_, std::min(4, static_cast<int>(std::floor(box_))));
@@ -56,12 +70,6 @@ Engine<D, Observer>::Engine(const Parameters& p)
   min_temperature_ = p.min_temperature;
   micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
 
-  const std::size_t n = static_cast<std::size_t>(n_);
-  part_.assign(n, Particle{});
-  id_.resize(n);
-  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  ev_.assign(n, EventData{});
-  last_collision_time_.assign(n, -k_inf);
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
   cells_ = cells;
@@ -193,26 +201,53 @@ void Engine<D, Observer>::resync() {
   rebuild_events();
 }
 
-// Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
-// reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
-// Only called with every particle at clock_.now and all predictions about to be redone.
+// Renumbers the particles cell by cell (within a cell, in their old order) so that neighbours sit
+// close in memory: a prediction reads its partners from a few cache lines instead of random ones.
+// When the data outgrow the cache the cells are taken along a Hilbert curve (hilbert_curve.hpp),
+// which keeps the particles of a stencil's cells numbered close together, where the row-by-row
+// order puts each row of the stencil a row of cells apart; in the cache the row-by-row order is
+// kept (the numbering changes the rounding of sums over the particles, hence trajectories).
+// Rebuilds the cell lists. Only called with every particle at clock_.now and all predictions
+// about to be redone.
 template <int D, class Observer>
 void Engine<D, Observer>::sort_by_cell() {
-  std::vector<std::int32_t> start(cells_ + 1, 0);
-  for (const auto& particle : part_) ++start[particle.cell + 1];
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<Particle> sorted(part_.size());
-  std::vector<double> last(part_.size());
-  std::vector<std::int32_t> ids(part_.size());
-  for (std::int32_t i = 0; i < n_; ++i) {
-    const std::int32_t to = start[part_[i].cell]++;
-    sorted[to] = part_[i];
-    last[to] = last_collision_time_[i];
-    ids[to] = id_[i];
+  const std::size_t n = static_cast<std::size_t>(n_);
+  std::vector<std::int32_t> order(n);  // new number -> old number
+  {
+    const int bits = hilbert_bits(cells_per_side_);
+    std::vector<std::uint64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      int x[D];
+      coords_(part_[i].cell, x);
+      key[i] = outgrows_cache_ ? hilbert_index<D>(x, bits) : static_cast<std::uint64_t>(part_[i].cell);
+      order[i] = static_cast<std::int32_t>(i);
+    }
+    std::sort(order.begin(), order.end(), [&key](std::int32_t a, std::int32_t b) {
+      return key[a] < key[b] || (key[a] == key[b] && a < b);
+    });
   }
-  part_.swap(sorted);
-  last_collision_time_.swap(last);
-  id_.swap(ids);
+  // Permuted in place, cycle by cycle (a sorted copy of the arrays would raise the peak memory
+  // of a large run by 60 bytes per particle): position k takes the particle order[k].
+  for (std::size_t start = 0; start < n; ++start) {
+    if (order[start] < 0) continue;
+    const Particle particle = part_[start];
+    const double last = last_collision_time_[start];
+    const std::int32_t id = id_[start];
+    for (std::size_t k = start;;) {
+      const auto from = static_cast<std::size_t>(order[k]);
+      order[k] = -1;  // placed
+      if (from == start) {
+        part_[k] = particle;
+        last_collision_time_[k] = last;
+        id_[k] = id;
+        break;
+      }
+      part_[k] = part_[from];
+      last_collision_time_[k] = last_collision_time_[from];
+      id_[k] = id_[from];
+      k = from;
+    }
+  }
   allocate_cells();
   for (std::int32_t i = 0; i < n_; ++i) file_in_cell(i, part_[i].cell);
 }
@@ -228,9 +263,10 @@ void Engine<D, Observer>::rebuild_events() {
       }
       part_[i].cell = cell_of_position(part_[i].r);
     }
+  resort_at_ = outgrows_cache_ ? collisions_ + static_cast<std::uint64_t>(k_resort_collisions * n_)
+                               : std::numeric_limits<std::uint64_t>::max();
   sort_by_cell();
   if (neighbour_lists_) build_neighbour_lists();
-  prefetch_ = memory_bytes() > k_prefetch_min_bytes;
   // Calendar buckets: about one event per bucket. The bucket width comes from the mean time to
   // the particles' next events (measured after predicting with a provisional width).
   const std::int64_t buckets = 4 * static_cast<std::int64_t>(n_);  // window ~ 4 mean waits
