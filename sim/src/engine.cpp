@@ -50,11 +50,9 @@ constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy
 constexpr double k_overlap_tolerance = 1e-10;
 // Engine data beyond a core's L2 cache (2 MB here). Software prefetches (of the next event's and
 // of the candidates' records) only pay then; below, they are extra instructions (8 % of them for
-// the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve,
-// and renumbered every k_resort_collisions collisions per particle, as they drift away from
-// their neighbours in memory.
+// the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve
+// at every rebuild, and disks get wider cells (k_cell_occupancy_beyond_cache).
 constexpr std::size_t k_cache_bytes = std::size_t{2} << 20;
-constexpr double k_resort_collisions = 20;
 // Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
 // gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
 constexpr int k_gather_block = 16;
@@ -118,8 +116,7 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
       collide(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
       if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
-      if (sum_u2_ < rescale_below || clock_.now > k_rebase_time || collisions_ >= resort_at_)
-        return Outcome::resync;
+      if (sum_u2_ < rescale_below || clock_.now > k_rebase_time) return Outcome::resync;
     }
     if (debug_check_every_ != 0 && events_ % debug_check_every_ == 0) check_overlaps();
   }

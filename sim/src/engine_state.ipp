@@ -263,8 +263,6 @@ void Engine<D, Observer>::rebuild_events() {
       }
       part_[i].cell = cell_of_position(part_[i].r);
     }
-  resort_at_ = outgrows_cache_ ? collisions_ + static_cast<std::uint64_t>(k_resort_collisions * n_)
-                               : std::numeric_limits<std::uint64_t>::max();
   sort_by_cell();
   if (neighbour_lists_) build_neighbour_lists();
   // Calendar buckets: about one event per bucket. The bucket width comes from the mean time to

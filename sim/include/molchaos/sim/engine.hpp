@@ -215,10 +215,9 @@ class Engine {
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
-  // Data beyond the cache: prefetches, particles numbered along a Hilbert curve and renumbered
-  // (a resync) when the collision count reaches resort_at_.
+  // Data beyond the cache (decided at construction): wider cells for disks, prefetches, particles
+  // numbered along a Hilbert curve.
   bool outgrows_cache_ = true;
-  std::uint64_t resort_at_ = std::numeric_limits<std::uint64_t>::max();
 
   // Time and units: physical t = t_offset + theta * tau, physical v = u / theta.
   InternalClock clock_;
