@@ -83,12 +83,8 @@ void time_collisions(benchmark::State& state, const Parameters& p, std::uint64_t
 
 // d = 2, N = range(0), density = range(1) / 100, restitution 0.9, no shuffle.
 void bm_disks(benchmark::State& state) {
-  Parameters p;
-  p.dimension = 2;
-  p.particles = state.range(0);
-  p.density = static_cast<double>(state.range(1)) / 100.0;
-  p.restitution = 0.9;
-  p.relax_collisions_per_particle = 1;
+  const Parameters p = molchaos::bench::disks_case(state.range(0),
+                                                    static_cast<double>(state.range(1)) / 100.0);
   // 20 collisions per particle (bounded to [2e5, 2e6]): long enough to time, short of clustering.
   const auto collisions =
       static_cast<std::uint64_t>(std::clamp(20.0 * static_cast<double>(p.particles), 2e5, 2e6));

@@ -4,7 +4,8 @@
 # runs of the two benches ROUNDS times and prints, per case, the median collisions per CPU second
 # of each, their ranges, and the paired ratios now/REV. Usage:
 #   bench/compare_engines.sh BUILD_DIR REV [ROUNDS=3] [FILTER=.]
-# Takes ROUNDS x 2 bench runs (1-2 min each) plus the build of REV's bench (about 2 minutes).
+# Takes ROUNDS x 2 bench runs (1-2 min each) plus the build of REV's bench (about 2 minutes);
+# OLD_BENCH=PATH uses a bench_engine already built from REV instead of building it.
 set -euo pipefail
 . "$(dirname "$0")/rates_lib.sh"
 build=${1:?usage: compare_engines.sh BUILD_DIR REV [ROUNDS] [FILTER]}
@@ -19,11 +20,16 @@ now="$build/bench/bench_engine"
 git rev-parse --verify -q "$rev^{commit}" >/dev/null || { echo "compare_engines.sh: REV '$rev' is not a commit" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'git worktree remove --force "$tmp/tree" >/dev/null 2>&1 || true; rm -rf "$tmp"' EXIT
-git worktree add -f --detach "$tmp/tree" "$rev" >/dev/null 2>&1
-echo "building bench_engine of $rev ..." >&2
-cmake -S "$tmp/tree" -B "$tmp/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$tmp/build" -j "$(nproc)" --target bench_engine >/dev/null
-old="$tmp/build/bench/bench_engine"
+if [ -n "${OLD_BENCH:-}" ]; then
+  [ -x "$OLD_BENCH" ] || { echo "compare_engines.sh: OLD_BENCH '$OLD_BENCH' is not an executable" >&2; exit 1; }
+  old=$OLD_BENCH
+else
+  git worktree add -f --detach "$tmp/tree" "$rev" >/dev/null 2>&1
+  echo "building bench_engine of $rev ..." >&2
+  cmake -S "$tmp/tree" -B "$tmp/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$tmp/build" -j "$(nproc)" --target bench_engine >/dev/null
+  old="$tmp/build/bench/bench_engine"
+fi
 for r in $(seq "$rounds"); do
   for side in old now; do
     exe=$old; [ "$side" = now ] && exe=$now

@@ -20,6 +20,18 @@ inline sim::Parameters paper_case(sim::Randomization shuffle) {
   return p;
 }
 
+/// Disks at the paper's kind of state for the size study (bm_disks): d = 2, N particles, density n,
+/// restitution 0.9, no shuffle.
+inline sim::Parameters disks_case(long particles, double density) {
+  sim::Parameters p;
+  p.dimension = 2;
+  p.particles = particles;
+  p.density = density;
+  p.restitution = 0.9;
+  p.relax_collisions_per_particle = 1;
+  return p;
+}
+
 /// Elastic hard spheres, N = 1e5, at the given packing fraction (Smallenburg's timed work).
 inline sim::Parameters spheres_case(double packing_fraction) {
   sim::Parameters p;

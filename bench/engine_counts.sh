@@ -3,7 +3,7 @@
 # data-cache misses of a simulated 48 KB L1 and 2 MB L2): the same for the same binary whatever
 # the machine's load, so speed changes can be compared exactly.
 # Usage: engine_counts.sh BUILD_DIR [CASE ...]   (cases: paper paper_series paper_contacts
-# spheres10 spheres40; default paper spheres10 spheres40). About a minute and a half per case
+# disks1e5 disks1e6 spheres10 spheres40; default paper spheres10 spheres40). About a minute and a half per case
 # (valgrind emulates the setup too).
 set -euo pipefail
 build=${1:?usage: engine_counts.sh BUILD_DIR [CASE ...]}

@@ -16,6 +16,7 @@
 #endif
 
 #include "molchaos/sim/cell_grid.hpp"
+#include "molchaos/sim/hilbert_curve.hpp"
 #include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/run.hpp"
 
@@ -39,11 +40,19 @@ constexpr double k_micro_fraction = 1e-10;
 // 0.4 per cell beat 0.2, 0.3 and 0.5 at packing 0.1 (fewer crossings, fewer cells to touch).
 template <int D>
 constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
+// Disks whose data outgrow the cache (k_cache_bytes) are memory-bound: each event costs cache
+// misses, so fewer events (wider cells: 4 instead of 6.5 events per collision at n = 0.05) pay
+// more than the extra pair predictions cost (paired wall-clock rates at N = 1e6, n = 0.05:
+// occupancy 2 ran 1.09, 1.23 and 1.37 times as fast as 0.5); the blocks of 16 ints also hold fewer empty
+// slots per particle (32 instead of 64 bytes).
+template <int D>
+constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
 constexpr double k_overlap_tolerance = 1e-10;
-// Software prefetches (of the next event's and of the candidates' records) only pay when the
-// engine's data outgrow a core's L2 cache (2 MB here); below, they are extra instructions
-// (8 % of them for the paper's case, N = 5000, 1 MB).
-constexpr std::size_t k_prefetch_min_bytes = std::size_t{2} << 20;
+// Engine data beyond a core's L2 cache (2 MB here). Software prefetches (of the next event's and
+// of the candidates' records) only pay then; below, they are extra instructions (8 % of them for
+// the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve
+// at every rebuild, and disks get wider cells (k_cell_occupancy_beyond_cache).
+constexpr std::size_t k_cache_bytes = std::size_t{2} << 20;
 // Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
 // gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
 constexpr int k_gather_block = 16;
@@ -78,10 +87,9 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
     // Likely the next event's particle: its records load while this event is processed.
-    if (const std::int32_t g = prefetch_ ? calendar_.guess_next(i) : -1; g >= 0) {
+    if (const std::int32_t g = outgrows_cache_ ? calendar_.guess_next(i) : -1; g >= 0) {
       __builtin_prefetch(&part_[g]);
       __builtin_prefetch(&ev_[g]);
-      __builtin_prefetch(&cell_xyz_[g]);
       calendar_.prefetch(g);
     }
     if (events_ >= event_limit) return Outcome::paused;
@@ -246,8 +254,7 @@ template <int D, class Observer>
 }
 
 template <int D, class Observer>
-[[gnu::always_inline]] inline void Engine<D, Observer>::crossing(std::int32_t i) {
-  const int* x = cell_xyz_[i].data();
+[[gnu::always_inline]] inline void Engine<D, Observer>::crossing(std::int32_t i, const int* x) {
   const Particle& p = part_[i];
   double best = k_inf;
   int axis = 0;
@@ -269,11 +276,13 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   advance_particle(i);
   double best = k_inf;
   std::int32_t partner = -1;
+  int x[D] = {};  // i's cell coordinates (cells only)
   if (neighbour_lists_) {
     earliest(i, lists_.slots(i), lists_.count(i), best, partner);
   } else {
+    coords_(part_[i].cell, x);
     int stencil[stencil_size<D>()];
-    stencil_of(i, stencil);
+    stencil_of(i, x, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
     const std::int32_t count = gather<stencil_size<D>()>(stencil);
     earliest(i, candidates_.data(), count, best, partner);
@@ -285,7 +294,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   if (neighbour_lists_)
     shell_exit(i);
   else
-    crossing(i);
+    crossing(i, x);
   calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 
@@ -314,8 +323,10 @@ template <int D, class Observer>
 void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
   const double cutoff2 = cutoff * cutoff;
+  int x[D];
+  coords_(part_[i].cell, x);
   int stencil[stencil_size<D>()];
-  stencil_of(i, stencil);
+  stencil_of(i, x, stencil);
   const std::int32_t count = gather<stencil_size<D>()>(stencil);
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
@@ -357,7 +368,7 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
   for (const std::int32_t k : old) lists_.remove(k, i);
   lists_.clear(i);
   cell_remove(i);
-  cell_insert(i, cell_of_position(part_[i].r));
+  file_in_cell(i, cell_of_position(part_[i].r));
   collect_neighbours(i, false);
   predict(i);
 }
@@ -374,8 +385,9 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   Particle& p = part_[i];
   const int axis = ev_[i].cross_axis;
   const bool up = p.v[axis] > 0;
-  int* x = cell_xyz_[i].data();
   const int old_cell = p.cell;
+  int x[D];
+  coords_(old_cell, x);
   // The wall crossed: the old cell's upper wall (up) or lower wall; the wrap is the rare case.
   const int from = x[axis];
   const int sign = 2 * static_cast<int>(up) - 1;
@@ -387,7 +399,7 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
     p.r[axis] = up ? 0.0 : box_;
     step = (up ? -1 : 1) * (cells_per_side_ - 1) * stride_[axis];
   }
-  x[axis] = to;  // x is i's cell_xyz_ entry: now the new cell's coordinates
+  x[axis] = to;  // now the new cell's coordinates
   const int c = old_cell + step;
   cell_remove(i);
   file_in_cell(i, c);
@@ -412,7 +424,7 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   e.partner = static_cast<std::int32_t>((static_cast<std::uint32_t>(partner) & ~keep) |
                                         (static_cast<std::uint32_t>(e.partner) & keep));
   e.partner_counter = (counter & ~keep) | (e.partner_counter & keep);
-  crossing(i);
+  crossing(i, x);
   calendar_.update(i, earlier_of(best, ev_[i].cross_time));
 }
 

@@ -30,7 +30,7 @@ template <int D, class Observer>
 template <class Self, class Archive>
 void Engine<D, Observer>::checkpoint_members(Self& self, Archive& archive) {
   static_assert(std::is_trivially_copyable_v<Observer>, "observers are saved as bytes");
-  archive(self.part_, self.id_, self.ev_, self.last_collision_time_, self.slot_, self.cell_xyz_);
+  archive(self.part_, self.id_, self.ev_, self.last_collision_time_);
   // Cell blocks: the aligned origin depends on the allocation's address, so only the blocks are
   // saved; the reader allocates them for the saved capacity first.
   archive(self.capacity_);
@@ -40,7 +40,7 @@ void Engine<D, Observer>::checkpoint_members(Self& self, Archive& archive) {
   archive(self.center_);
   NeighbourLists::checkpoint_members(self.lists_, archive);
   EventCalendar::checkpoint_members(self.calendar_, archive);
-  archive(self.prefetch_, self.clock_, self.sum_u2_, self.collisions_, self.events_);
+  archive(self.clock_, self.sum_u2_, self.collisions_, self.events_);
   archive(self.shuffle_rng_, self.micro_run_, self.stalled_events_, self.observer_, self.stop_,
           self.stop_reason_);
 }
@@ -55,7 +55,7 @@ void Engine<D, Observer>::restore_state(CheckpointReader& in) {
   checkpoint_members(*this, in);
   const std::size_t n = static_cast<std::size_t>(n_);
   if (part_.size() != n || id_.size() != n || ev_.size() != n || last_collision_time_.size() != n ||
-      slot_.size() != n || cell_xyz_.size() != n || (neighbour_lists_ && center_.size() != n * D))
+      (neighbour_lists_ && center_.size() != n * D))
     in.fail("engine arrays of another size than the parameters' N");
 }
 

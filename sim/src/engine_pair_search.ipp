@@ -124,7 +124,7 @@ template <int D, class Observer>
                                                        std::int32_t& partner) const {
   double b = best;
   std::int32_t p = partner;
-  if (prefetch_)
+  if (outgrows_cache_)
     for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
 #if defined(__SSE2__)
   list[count] = i;
@@ -159,10 +159,10 @@ template <int D, class Observer>
   return interior;
 }
 
-// The 3^D cells around i's cell (i's cell included).
+// The 3^D cells around i's cell (i's cell included), x its coordinates.
 template <int D, class Observer>
-[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, int* stencil) const {
-  const int* x = cell_xyz_[i].data();
+[[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, const int* x,
+                                                                   int* stencil) const {
   if (interior_cell(x)) {
     for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
   } else {

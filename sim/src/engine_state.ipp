@@ -16,10 +16,24 @@ Engine<D, Observer>::Engine(const Parameters& p)
   neighbour_lists_ = D == 3 && packing_fraction >= k_neighbour_list_packing &&
                      box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
   shell_ = neighbour_lists_ ? k_shell : 0.0;
-  const double width_target =
-      neighbour_lists_
-          ? 1.0 + 2.0 * shell_
-          : std::max(1.0, std::pow(k_cell_occupancy<D> / p.density, 1.0 / static_cast<double>(D)));
+  const std::size_t n = static_cast<std::size_t>(n_);
+  part_.assign(n, Particle{});
+  id_.resize(n);
+  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
+  ev_.assign(n, EventData{});
+  last_collision_time_.assign(n, -k_inf);
+  auto cell_width_for = [&](double occupancy) {
+    return neighbour_lists_
+               ? 1.0 + 2.0 * shell_
+               : std::max(1.0, std::pow(occupancy / p.density, 1.0 / static_cast<double>(D)));
+  };
+  // Whether the engine's data (with the cells for the cache, blocks of 8 ints) outgrow the cache.
+  const double cells_in_cache = std::pow(std::floor(box_ / cell_width_for(k_cell_occupancy<D>)), D);
+  outgrows_cache_ = static_cast<double>(memory_bytes() + EventCalendar::memory_bytes_for(n_)) +
+                        32.0 * cells_in_cache >
+                    static_cast<double>(k_cache_bytes);
+  const double width_target = cell_width_for(outgrows_cache_ ? k_cell_occupancy_beyond_cache<D>
+                                                             : k_cell_occupancy<D>);
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
   if (!neighbour_lists_)
     cells_per_side_ = std::max(cells_per_side_, std::min(4, static_cast<int>(std::floor(box_))));
@@ -31,6 +45,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
     throw std::invalid_argument("particles: box side " + std::to_string(box_) +
                                 " is below 4 sigma; use more particles or a higher density");
   cell_width_ = box_ / cells_per_side_;
+  coords_ = CellCoordinates<D>(cells_per_side_);
   wall_.resize(static_cast<std::size_t>(cells_per_side_) + 1);
   for (int k = 0; k < cells_per_side_; ++k) wall_[k] = k * cell_width_;
   wall_[cells_per_side_] = box_;
@@ -55,14 +70,6 @@ Engine<D, Observer>::Engine(const Parameters& p)
   min_temperature_ = p.min_temperature;
   micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
 
-  const std::size_t n = static_cast<std::size_t>(n_);
-  part_.assign(n, Particle{});
-  cell_xyz_.resize(n);
-  id_.resize(n);
-  for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  ev_.assign(n, EventData{});
-  last_collision_time_.assign(n, -k_inf);
-  slot_.assign(n, -1);
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
   cells_ = cells;
@@ -194,29 +201,55 @@ void Engine<D, Observer>::resync() {
   rebuild_events();
 }
 
-// Renumbers the particles in cell order so that neighbours sit close in memory (a prediction then
-// reads partners from a few cache lines instead of random ones); rebuilds the cell lists.
-// Only called with every particle at clock_.now and all predictions about to be redone.
+// Renumbers the particles cell by cell (within a cell, in their old order) so that neighbours sit
+// close in memory: a prediction reads its partners from a few cache lines instead of random ones.
+// When the data outgrow the cache the cells are taken along a Hilbert curve (hilbert_curve.hpp),
+// which keeps the particles of a stencil's cells numbered close together, where the row-by-row
+// order puts each row of the stencil a row of cells apart; in the cache the row-by-row order is
+// kept (the numbering changes the rounding of sums over the particles, hence trajectories).
+// Rebuilds the cell lists. Only called with every particle at clock_.now and all predictions
+// about to be redone.
 template <int D, class Observer>
 void Engine<D, Observer>::sort_by_cell() {
-  std::vector<std::int32_t> start(cells_ + 1, 0);
-  for (const auto& particle : part_) ++start[particle.cell + 1];
-  for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
-  std::vector<Particle> sorted(part_.size());
-  std::vector<double> last(part_.size());
-  std::vector<std::int32_t> ids(part_.size());
-  for (std::int32_t i = 0; i < n_; ++i) {
-    const std::int32_t to = start[part_[i].cell]++;
-    sorted[to] = part_[i];
-    last[to] = last_collision_time_[i];
-    ids[to] = id_[i];
+  const std::size_t n = static_cast<std::size_t>(n_);
+  std::vector<std::int32_t> order(n);  // new number -> old number
+  {
+    const int bits = hilbert_bits(cells_per_side_);
+    std::vector<std::uint64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      int x[D];
+      coords_(part_[i].cell, x);
+      key[i] = outgrows_cache_ ? hilbert_index<D>(x, bits) : static_cast<std::uint64_t>(part_[i].cell);
+      order[i] = static_cast<std::int32_t>(i);
+    }
+    std::sort(order.begin(), order.end(), [&key](std::int32_t a, std::int32_t b) {
+      return key[a] < key[b] || (key[a] == key[b] && a < b);
+    });
   }
-  part_.swap(sorted);
-  last_collision_time_.swap(last);
-  id_.swap(ids);
+  // Permuted in place, cycle by cycle (a sorted copy of the arrays would raise the peak memory
+  // of a large run by 60 bytes per particle): position k takes the particle order[k].
+  for (std::size_t start = 0; start < n; ++start) {
+    if (order[start] < 0) continue;
+    const Particle particle = part_[start];
+    const double last = last_collision_time_[start];
+    const std::int32_t id = id_[start];
+    for (std::size_t k = start;;) {
+      const auto from = static_cast<std::size_t>(order[k]);
+      order[k] = -1;  // placed
+      if (from == start) {
+        part_[k] = particle;
+        last_collision_time_[k] = last;
+        id_[k] = id;
+        break;
+      }
+      part_[k] = part_[from];
+      last_collision_time_[k] = last_collision_time_[from];
+      id_[k] = id_[from];
+      k = from;
+    }
+  }
   allocate_cells();
-  std::fill(slot_.begin(), slot_.end(), -1);
-  for (std::int32_t i = 0; i < n_; ++i) cell_insert(i, part_[i].cell);
+  for (std::int32_t i = 0; i < n_; ++i) file_in_cell(i, part_[i].cell);
 }
 
 template <int D, class Observer>
@@ -232,7 +265,6 @@ void Engine<D, Observer>::rebuild_events() {
     }
   sort_by_cell();
   if (neighbour_lists_) build_neighbour_lists();
-  prefetch_ = memory_bytes() > k_prefetch_min_bytes;
   // Calendar buckets: about one event per bucket. The bucket width comes from the mean time to
   // the particles' next events (measured after predicting with a provisional width).
   const std::int64_t buckets = 4 * static_cast<std::int64_t>(n_);  // window ~ 4 mean waits
@@ -267,33 +299,23 @@ int Engine<D, Observer>::cell_of_position(const double* r) const {
 template <int D, class Observer>
 void Engine<D, Observer>::build_cells() {
   allocate_cells();
-  std::fill(slot_.begin(), slot_.end(), -1);
   for (std::int32_t i = 0; i < n_; ++i) {
     for (int a = 0; a < D; ++a) {
       double& x = part_[i].r[a];
       if (x < 0) x += box_;
       if (x >= box_) x -= box_;
     }
-    cell_insert(i, cell_of_position(part_[i].r));
+    file_in_cell(i, cell_of_position(part_[i].r));
   }
 }
 
-template <int D, class Observer>
-void Engine<D, Observer>::cell_insert(std::int32_t i, int c) {
-  cell_coords<D>(c, cells_per_side_, cell_xyz_[i].data());
-  file_in_cell(i, c);
-}
-
-// Files i in the slots of cell c; cell_xyz_[i] must already hold c's coordinates (the hot path,
-// a cell crossing, knows them without divisions).
+// Files i in the slots of cell c.
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
   if (cell_block(c)[0] == capacity_) [[unlikely]] grow_cells();  // i is not filed: skipped
   std::int32_t* block = cell_block(c);
   part_[i].cell = c;
-  const std::int32_t k = block[0]++;
-  block[1 + k] = i;
-  slot_[i] = k;
+  block[1 + block[0]++] = i;
 }
 
 template <int D, class Observer>
@@ -306,28 +328,55 @@ void Engine<D, Observer>::allocate_cells() {
   candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_ + k_gather_block);
 }
 
-// More slots per cell (a cluster formed): doubles the block size and re-files every particle.
+// More slots per cell (a cluster formed): doubles the block size; each cell keeps its members,
+// in increasing index (the order a re-filing in index order gives).
 template <int D, class Observer>
 void Engine<D, Observer>::grow_cells() {
+  const std::vector<std::int32_t> old = std::move(slots_);
+  const std::size_t old_origin = slots_origin_;
+  const std::size_t old_stride = static_cast<std::size_t>(capacity_) + 1;
   capacity_ = 2 * (capacity_ + 1) - 1;
   allocate_cells();
-  for (std::int32_t k = 0; k < n_; ++k)
-    if (slot_[k] >= 0) {
-      std::int32_t* block = cell_block(part_[k].cell);
-      const std::int32_t m = block[0]++;
-      block[1 + m] = k;
-      slot_[k] = m;
-    }
+  for (std::size_t c = 0; c < cells_; ++c) {
+    const std::int32_t* from = old.data() + old_origin + c * old_stride;
+    std::int32_t* to = cell_block(static_cast<int>(c));
+    std::copy(from, from + 1 + from[0], to);
+    std::sort(to + 1, to + 1 + to[0]);
+  }
+}
+
+// The slot of member i in a cell block. Blocks of 8 or 16 ints are searched with SSE2 compares
+// (no per-particle slot index to keep: one random memory access less per crossing, the block is
+// read anyway); lanes outside 1 .. count are masked, they may hold stale copies.
+template <int D, class Observer>
+[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::slot_in_block(
+    const std::int32_t* block, std::int32_t i) const {
+#if defined(__SSE2__)
+  if (capacity_ < k_gather_block) {
+    const __m128i key = _mm_set1_epi32(i);
+    const auto* v = reinterpret_cast<const __m128i*>(block);  // 32-byte aligned
+    auto lanes = [&](int q) {
+      return static_cast<unsigned>(
+          _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_load_si128(v + q), key))));
+    };
+    unsigned bits = lanes(0) | lanes(1) << 4;
+    if (capacity_ > 7) bits |= lanes(2) << 8 | lanes(3) << 12;
+    const unsigned valid = (2u << block[0]) - 2u;
+    return __builtin_ctz(bits & valid) - 1;
+  }
+#endif
+  std::int32_t k = 0;
+  while (block[1 + k] != i) ++k;
+  return k;
 }
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
   // Swap-remove: the cell's last member takes i's slot.
   std::int32_t* block = cell_block(part_[i].cell);
+  const std::int32_t k = slot_in_block(block, i);
   const std::int32_t last = block[block[0]--];
-  block[1 + slot_[i]] = last;
-  slot_[last] = slot_[i];
-  slot_[i] = -1;
+  block[1 + k] = last;
 }
 
 template <int D, class Observer>
@@ -377,7 +426,9 @@ double Engine<D, Observer>::min_pair_distance() const {
   double best = k_inf;
   int stencil[stencil_size<D>()];
   for (std::int32_t i = 0; i < n_; ++i) {
-    neighbour_cells<D>(cell_xyz_[i].data(), cells_per_side_, stencil);
+    int x[D];
+    coords_(part_[i].cell, x);
+    neighbour_cells<D>(x, cells_per_side_, stencil);
     for (int s = 0; s < stencil_size<D>(); ++s)
       for (const std::int32_t j : cell_members(stencil[s])) {
         if (j <= i) continue;
@@ -405,7 +456,6 @@ void Engine<D, Observer>::check_overlaps() const {
 template <int D, class Observer>
 std::size_t Engine<D, Observer>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(cell_xyz_) +
-         bytes(slot_) + bytes(slots_) + bytes(center_) + lists_.memory_bytes() +
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(slots_) + bytes(center_) + lists_.memory_bytes() +
          calendar_.memory_bytes();
 }

@@ -32,6 +32,9 @@ void check_grid(int cps) {
     int x[D];
     cell_coords<D>(c, cps, x);
     BOOST_TEST(cell_index<D>(x, cps) == c);  // numbering and coordinates are inverse
+    int fast[D];
+    CellCoordinates<D>{cps}(c, fast);
+    BOOST_TEST(std::equal(x, x + D, fast));  // the division-free coordinates agree
     // The stencil: 3^D distinct cells, exactly those within one cell along every axis.
     const std::set<int> stencil = stencil_set<D>(x, cps);
     BOOST_TEST(stencil.size() == static_cast<std::size_t>(stencil_size<D>()));
@@ -74,4 +77,28 @@ BOOST_AUTO_TEST_CASE(disks_grid_stencils_and_slabs) {
 
 BOOST_AUTO_TEST_CASE(spheres_grid_stencils_and_slabs) {
   for (int cps : {4, 5}) check_grid<3>(cps);
+}
+
+// The division-free coordinates on the largest grids the engine can make (indices near 2^31).
+BOOST_AUTO_TEST_CASE(division_free_coordinates_on_large_grids) {
+  for (int cps : {46340, 46341 - 1000, 1290, 1291}) {
+    const long long count2 = static_cast<long long>(cps) * cps;
+    for (long long c : {0LL, 1LL, cps - 1LL, cps + 0LL, count2 / 2, count2 - 1}) {
+      int x[2], fast[2];
+      cell_coords<2>(static_cast<int>(c), cps, x);
+      CellCoordinates<2>{cps}(static_cast<int>(c), fast);
+      BOOST_TEST(std::equal(x, x + 2, fast));
+    }
+    if (static_cast<long long>(cps) * cps * cps < (1LL << 31)) {
+      const long long count3 = static_cast<long long>(cps) * cps * cps;
+      long long differing = 0;
+      for (long long c = count3 - 1; c >= 0; c -= 997) {
+        int x[3], fast[3];
+        cell_coords<3>(static_cast<int>(c), cps, x);
+        CellCoordinates<3>{cps}(static_cast<int>(c), fast);
+        differing += !std::equal(x, x + 3, fast);
+      }
+      BOOST_TEST(differing == 0);
+    }
+  }
 }

@@ -30,6 +30,34 @@ int cell_index(const int* x, int cps) {
   return c;
 }
 
+// cell_coords() without integer division (a few cycles instead of tens; the event loop needs a
+// particle's cell coordinates at every event and keeps only its cell index): floor((c + 0.5) /
+// cps^k) in double precision. Exact for c < 2^31: c + 0.5 lies at least 0.5 from a multiple of
+// cps^k, so the quotient lies at least 0.5 / cps^k from an integer, far above its rounding
+// error (below 2^31 / cps^k * 2.3e-16).
+template <int D>
+struct CellCoordinates {
+  int cps = 1;
+  double inverse = 1;       // 1 / cps
+  double inverse_area = 1;  // 1 / cps^2
+
+  explicit CellCoordinates(int cells_per_side = 1)
+      : cps(cells_per_side),
+        inverse(1.0 / cells_per_side),
+        inverse_area(1.0 / (static_cast<double>(cells_per_side) * cells_per_side)) {}
+
+  void operator()(int c, int* x) const {
+    if constexpr (D == 3) {
+      const int z = static_cast<int>((c + 0.5) * inverse_area);
+      x[2] = z;
+      c -= z * cps * cps;
+    }
+    const int y = static_cast<int>((c + 0.5) * inverse);
+    x[1] = y;
+    x[0] = c - y * cps;
+  }
+};
+
 inline int wrap(int x, int cps) { return x < 0 ? x + cps : (x >= cps ? x - cps : x); }
 
 // The 3^D cells around c (periodic), c included.

@@ -20,6 +20,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "molchaos/sim/cell_grid.hpp"
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/collision_model.hpp"
 #include "molchaos/sim/collision_observers.hpp"
@@ -142,8 +143,8 @@ class Engine {
   void earliest(std::int32_t i, std::int32_t* list, std::int32_t count, double& best,
                 std::int32_t& partner) const;
   bool interior_cell(const int* x) const;
-  void stencil_of(std::int32_t i, int* stencil) const;
-  void crossing(std::int32_t i);
+  void stencil_of(std::int32_t i, const int* x, int* stencil) const;
+  void crossing(std::int32_t i, const int* x);
   void shell_exit(std::int32_t i);
   void rebuild_neighbours(std::int32_t i);
   void build_neighbour_lists();
@@ -154,9 +155,9 @@ class Engine {
   void sort_by_cell();
   void build_cells();
   int cell_of_position(const double* r) const;
-  void cell_insert(std::int32_t i, int c);
   void file_in_cell(std::int32_t i, int c);
   void cell_remove(std::int32_t i);
+  std::int32_t slot_in_block(const std::int32_t* block, std::int32_t i) const;
   void grow_cells();
   void request_stop(StopReason reason);
   double sum_velocity_squared() const;
@@ -167,6 +168,7 @@ class Engine {
   double box_ = 0, half_box_ = 0;
   int cells_per_side_ = 0;
   double cell_width_ = 0;
+  CellCoordinates<D> coords_;  // a cell's coordinates from its index (no per-particle copy)
   std::array<int, D == 2 ? 9 : 27> stencil_offset_{};  // neighbour cells of an interior cell
   // The cells entering the stencil of an interior cell entered along axis a, upwards (u = 1) or
   // downwards (u = 0): slab_offset_[2 a + u].
@@ -204,7 +206,6 @@ class Engine {
   std::vector<std::int32_t> slots_;
   std::size_t slots_origin_ = 0;  // index in slots_ of cell 0's block (32-byte aligned)
   std::size_t cells_ = 0;         // number of cells
-  std::vector<std::int32_t> slot_;  // particle's slot within its cell, -1 when not filed
   int capacity_ = 0;              // members per block
   std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
   std::int32_t* cell_block(int c) {
@@ -218,7 +219,6 @@ class Engine {
     return {block + 1, static_cast<std::size_t>(block[0])};
   }
   void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
-  std::vector<std::array<int, D>> cell_xyz_;  // cell coordinates of each particle's cell
 
   // Neighbour lists (dense spheres only): shell centres and the lists.
   bool neighbour_lists_ = false;
@@ -228,7 +228,9 @@ class Engine {
 
   // Event calendar: one entry per particle.
   EventCalendar calendar_;
-  bool prefetch_ = true;  // software prefetches pay only when the data outgrow the cache
+  // Data beyond the cache (decided at construction): wider cells for disks, prefetches, particles
+  // numbered along a Hilbert curve.
+  bool outgrows_cache_ = true;
 
   // Time and units: physical t = t_offset + theta * tau, physical v = u / theta.
   InternalClock clock_;

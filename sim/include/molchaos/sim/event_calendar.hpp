@@ -98,6 +98,14 @@ class EventCalendar {
             self.overflow_);
   }
 
+  /// The memory_bytes() of a calendar reset for n particles with 4 n buckets (the engine's).
+  static std::size_t memory_bytes_for(std::int32_t n) {
+    std::size_t buckets = 64;
+    while (buckets < 4 * static_cast<std::size_t>(n)) buckets *= 2;
+    return static_cast<std::size_t>(n) * sizeof(Entry) + buckets * sizeof(std::int32_t) +
+           buckets / 64 * sizeof(std::uint64_t);
+  }
+
   std::size_t memory_bytes() const {
     return e_.capacity() * sizeof(Entry) + head_.capacity() * sizeof(std::int32_t) +
            occupied_.capacity() * sizeof(std::uint64_t);
