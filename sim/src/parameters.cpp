@@ -68,6 +68,14 @@ void validate(const Parameters& p) {
   if (!std::isfinite(side))
     out_of_range("density", number(p.density),
                  "(0, " + number(n_max) + ") with a finite box side (N / n)^(1/d)");
+  // The cell lists need at least 4 cells of width >= sigma per side: with 3, two particles in
+  // neighbouring cells can be more than half a box apart and the minimum image flips while they
+  // approach, so a collision is missed (found with two disks in a box of side 10).
+  if (side < 4.0)
+    throw std::invalid_argument("particles: value " + std::to_string(p.particles) +
+                                " gives a box side " + number(side) +
+                                " below 4 sigma at this density; the allowed range is N >= " +
+                                number(std::ceil(p.density * std::pow(4.0, p.dimension))));
   // Below close packing but above what the initial state can reach for this N: refused here, as
   // a usage error, rather than after the work has started.
   // (Dilute starts, packing below 0.2, always fit; the lattice search is then not needed.)
@@ -82,14 +90,6 @@ void validate(const Parameters& p) {
                           : " spheres: the densest initial state, a simple cubic lattice with "
                             "vacancies,") +
                      " reaches no further (close packing is " + number(n_max) + ")");
-  // The cell lists need at least 4 cells of width >= sigma per side: with 3, two particles in
-  // neighbouring cells can be more than half a box apart and the minimum image flips while they
-  // approach, so a collision is missed (found with two disks in a box of side 10).
-  if (side < 4.0)
-    throw std::invalid_argument("particles: value " + std::to_string(p.particles) +
-                                " gives a box side " + number(side) +
-                                " below 4 sigma at this density; the allowed range is N >= " +
-                                number(std::ceil(p.density * std::pow(4.0, p.dimension))));
 }
 
 }  // namespace molchaos::sim
