@@ -11,6 +11,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/validation/report.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/reproduce.hpp"
@@ -46,6 +47,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
   sweep.runner = default_sweep_runner();
   sweep.label = o.quick ? "reproduce --quick" : "reproduce";
   std::filesystem::create_directories(o.out);
+  sim::remove_stale_temporaries(o.out);  // figures and tables of a killed earlier run
   std::cerr << fmt::format(
       "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "
       "plus Fig. 3 and the elastic-limit runs; cache {}\n",

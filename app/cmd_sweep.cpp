@@ -86,7 +86,9 @@ void run_sweep_command(SweepCliOptions& o) {
         "{:>8} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density, s.restitution,
         s.mode, s.A.value, error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
         error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
-        error_bar ? "" : "  (no error bar: fewer than 2 runs)");
+        error_bar        ? ""
+        : s.runs == 0    ? "  (not measured: no run succeeded)"
+                         : "  (no error bar: fewer than 2 runs)");
     for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
   }
   if (!o.out.empty()) {

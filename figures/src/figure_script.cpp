@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -19,6 +18,7 @@
 #include <system_error>
 
 #include "gnuplot_iostream.hpp"
+#include "molchaos/sim/atomic_file.hpp"
 
 extern char** environ;
 
@@ -27,7 +27,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Removes the temporary files it holds unless they have been renamed into place.
+// Removes the temporary files it holds unless they have been renamed into place. The names are
+// the atomic writer's (sim::temporary_name: host, PID, random number), so that
+// sim::remove_stale_temporaries recognises those of a killed process and nothing else.
 class TemporaryFiles {
  public:
   TemporaryFiles() = default;
@@ -39,17 +41,22 @@ class TemporaryFiles {
       fs::remove(path, ignored);
     }
   }
-  fs::path add(const fs::path& directory, const std::string& basename, const std::string& ext) {
-    static std::atomic<unsigned> counter{0};
-    const auto name = "." + basename + ".tmp-" + std::to_string(::getpid()) + "-" +
-                      std::to_string(counter++) + ext;
-    paths_.push_back(directory / name);
+  fs::path add(const fs::path& final_path) {
+    paths_.emplace_back(sim::temporary_name(final_path.string()));
     return paths_.back();
   }
 
  private:
   std::vector<fs::path> paths_;
 };
+
+// " (No space left on device; 0 bytes free in <directory>)": why gnuplot may have failed to write.
+std::string space_note(const fs::path& directory) {
+  std::error_code ec;
+  const auto space = fs::space(directory, ec);
+  if (ec) return "";
+  return " (" + std::to_string(space.available) + " bytes free in " + directory.string() + ")";
+}
 
 std::string terminal_commands(const Canvas& canvas) {
   // Fonts sized for a journal column: the PNG at 1200 px and the PDF at 6 in keep the same
@@ -99,8 +106,11 @@ void write_script(const FigureScript& script, const fs::path& path) {
     gp << "\ndo for [target in targets] {\n  reset\n"
        << terminal_commands(script.canvas) << script.commands << "  unset multiplot\n"
        << "  unset output\n}\n";
+    errno = 0;
     gp.flush();
-    if (!gp) throw std::runtime_error("write error");
+    if (!gp)
+      throw std::runtime_error(std::string("write error") +
+                               (errno != 0 ? std::string(" (") + std::strerror(errno) + ")" : ""));
   } catch (const std::exception& e) {
     throw std::runtime_error("cannot write gnuplot script " + path.string() + ": " + e.what());
   }
@@ -187,13 +197,14 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
   std::string targets, assignments;
   for (const auto& [wanted, ext] : {std::pair{options.png, "png"}, std::pair{options.pdf, "pdf"}}) {
     if (!wanted) continue;
-    const fs::path temporary = temporaries.add(directory, script.basename, std::string(".") + ext);
-    outputs.push_back({temporary, directory / (script.basename + "." + ext)});
+    const fs::path final_path = directory / (script.basename + "." + ext);
+    const fs::path temporary = temporaries.add(final_path);
+    outputs.push_back({temporary, final_path});
     targets += (targets.empty() ? "" : " ") + std::string(ext);
     assignments += std::string("output_") + ext + "=" + quote(temporary.string()) + "; ";
   }
-  const fs::path script_temporary = temporaries.add(directory, script.basename, ".gp");
   const fs::path script_final = directory / (script.basename + ".gp");
+  const fs::path script_temporary = temporaries.add(script_final);
   write_script(script, script_temporary);
 
   const std::string context = "rendering " + outputs.front().final.string();
@@ -207,8 +218,8 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
   }
   for (const auto& output : outputs) {
     if (!fs::exists(output.temporary) || fs::file_size(output.temporary) == 0) {
-      throw std::runtime_error(context + ": gnuplot wrote no " + output.final.string() + "\n" +
-                               result.error_output);
+      throw std::runtime_error(context + ": gnuplot wrote no " + output.final.string() +
+                               space_note(directory) + "\n" + result.error_output);
     }
   }
 

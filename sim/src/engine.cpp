@@ -139,8 +139,9 @@ auto Engine<D, Observer>::dispatch(double tau_stop, std::uint64_t event_limit, c
 template <int D, class Observer>
 auto Engine<D, Observer>::advance_to(double t, std::uint64_t max_events) -> Status {
   if (stop_) return Status::stopped;
-  const std::uint64_t limit =
+  std::uint64_t limit =
       max_events == std::numeric_limits<std::uint64_t>::max() ? max_events : events_ + max_events;
+  if (event_limit_ != 0) limit = std::min(limit, event_limit_);
   for (;;) {
     const double tau_stop = clock_.internal_time(t);
     switch (dispatch(tau_stop, limit, model_)) {
@@ -149,8 +150,13 @@ auto Engine<D, Observer>::advance_to(double t, std::uint64_t max_events) -> Stat
         return Status::reached;
       case Outcome::resync:
         resync();
+        if (stop_) return Status::stopped;
         continue;
       case Outcome::paused:
+        if (event_limit_ != 0 && events_ >= event_limit_) {
+          request_stop(StopReason::max_events);
+          return Status::stopped;
+        }
         return Status::paused;
       case Outcome::stopped:
         return Status::stopped;
@@ -163,7 +169,7 @@ auto Engine<D, Observer>::step() -> Status {
   if (stop_) return Status::stopped;
   const Outcome outcome = dispatch(k_inf, events_ + 1, model_);
   if (outcome == Outcome::resync) resync();
-  return outcome == Outcome::stopped ? Status::stopped : Status::paused;
+  return outcome == Outcome::stopped || stop_ ? Status::stopped : Status::paused;
 }
 
 template <int D, class Observer>

@@ -66,9 +66,19 @@ Engine<D, Observer>::Engine(const Parameters& p)
       }
   }
 
-  collision_limit_ = p.max_collisions;
   min_temperature_ = p.min_temperature;
-  micro_interval_ = k_micro_fraction / enskog_collision_frequency(D, p.density, 1.0);
+  const double collision_frequency = enskog_collision_frequency(D, p.density, 1.0);
+  micro_interval_ = k_micro_fraction / collision_frequency;
+  {
+    // Events per collision of a homogeneous gas (independent of T): the collision, up to four
+    // stale predictions of the particles whose velocity changed, and each particle's bookkeeping
+    // events: cell crossings at rate D <|v_x|> / width, or shell exits at rate <|v|> / shell.
+    const double bookkeeping_rate =
+        neighbour_lists_ ? std::sqrt(8.0 / std::numbers::pi) / shell_
+                         : D * std::sqrt(2.0 / std::numbers::pi) / cell_width_;
+    events_per_collision_ = 5.0 + 2.0 * bookkeeping_rate / collision_frequency;
+  }
+  set_collision_limit(p.max_collisions);
 
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
@@ -186,12 +196,47 @@ void Engine<D, Observer>::build_neighbour_lists() {
 }
 
 template <int D, class Observer>
+void Engine<D, Observer>::set_collision_limit(std::uint64_t limit) {
+  collision_limit_ = limit;
+  const double events = static_cast<double>(limit) * events_per_collision_ *
+                        static_cast<double>(k_events_per_expected_event);
+  event_limit_ = events < 1.8e19 ? static_cast<std::uint64_t>(events) : 0;
+}
+
+// Collisions conserve momentum only up to rounding, and the centre of mass keeps its velocity
+// while the gas cools: after some 30 decades of cooling this drift would carry most of the
+// kinetic energy (T frozen at the drift's, the gas drifting across cells without colliding).
+// The total momentum is zero by construction, so the drift is removed once its energy exceeds
+// k_drift_fraction of the total; before that (every run that cools by fewer than about 20
+// decades) no velocity is touched.
+template <int D, class Observer>
+void Engine<D, Observer>::remove_momentum_drift() {
+  constexpr double k_drift_fraction = 1e-10;
+  double mean[D] = {};
+  for (const auto& particle : part_)
+    for (int a = 0; a < D; ++a) mean[a] += particle.v[a];
+  double drift_u2 = 0;
+  for (int a = 0; a < D; ++a) {
+    mean[a] /= n_;
+    drift_u2 += n_ * mean[a] * mean[a];
+  }
+  if (!(drift_u2 > k_drift_fraction * sum_velocity_squared())) return;
+  for (auto& particle : part_)
+    for (int a = 0; a < D; ++a) particle.v[a] -= mean[a];
+}
+
+template <int D, class Observer>
 void Engine<D, Observer>::resync() {
   for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
+  remove_momentum_drift();
   sum_u2_ = sum_velocity_squared();
   const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
   double factor = 1.0;
-  if (temperature < k_rescale_temperature && temperature > 0) {
+  // Physical T = T_internal / theta^2: at the floor of double precision the run stops (no
+  // further rescaling, which would overflow theta^2).
+  if (!(temperature / clock_.theta / clock_.theta >= k_temperature_floor))
+    request_stop(StopReason::temperature_floor);
+  else if (temperature < k_rescale_temperature && temperature > 0) {
     factor = 1.0 / std::sqrt(temperature);
     scale_velocities(factor);
   }

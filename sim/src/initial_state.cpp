@@ -10,6 +10,45 @@
 
 namespace molchaos::sim {
 
+// Lattice with random vacancies and jitter. d = 2: k sites per row, an even number m of rows, odd
+// rows shifted by half a spacing (a triangular lattice when the box allows it), the (k, m) with
+// k m >= N that maximises the nearest-site distance; that reaches n = 1.1 (packing 0.86, above
+// random close packing) for N = 1000. d = 3: a simple cubic lattice (n < ~1).
+StartLattice start_lattice(int dimension, std::int64_t n, double box) {
+  StartLattice lattice;
+  if (dimension == 2) {
+    const auto k_max = static_cast<std::int64_t>(std::floor(box));
+    for (std::int64_t k = 1; k <= k_max; ++k) {
+      std::int64_t m = (n + k - 1) / k;
+      m += m % 2;  // even: the shifted rows must match across the periodic boundary
+      const double a = box / static_cast<double>(k), h = box / static_cast<double>(m);
+      const double d = std::min({a, std::sqrt(0.25 * a * a + h * h), 2.0 * h});
+      if (d > lattice.nearest) lattice = {k, m, d};
+    }
+  } else {
+    std::int64_t m = static_cast<std::int64_t>(std::ceil(std::cbrt(static_cast<double>(n)) - 1e-9));
+    while (m * m * m < n) ++m;
+    lattice = {m, m, box / static_cast<double>(m)};
+  }
+  return lattice;
+}
+
+double densest_start(int dimension, std::int64_t n, double box) {
+  // Lattice distances scale with L ~ n^(-1/d): the densest start this lattice gives for this N.
+  const double density = static_cast<double>(n) / std::pow(box, dimension);
+  return density * std::pow(start_lattice(dimension, n, box).nearest, dimension) / (1.0 + 1e-6);
+}
+
+std::string too_dense_message(int dimension, std::int64_t n, double box) {
+  const double density = static_cast<double>(n) / std::pow(box, dimension);
+  return "density " + std::to_string(density) +
+         " is too high to generate a non-overlapping initial state for N = " + std::to_string(n) +
+         (dimension == 2 ? " disks (a staggered lattice with vacancies reaches n < "
+                         : " spheres (a simple cubic lattice with vacancies reaches n < ") +
+         std::to_string(densest_start(dimension, n, box)) + " for this N; close packing is " +
+         std::to_string(dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0)) + ")";
+}
+
 // Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
 // fraction); otherwise a simple lattice with random vacancies and jitter. Relaxation melts either.
 template <int D>
@@ -65,43 +104,10 @@ std::vector<double> place_particles(std::int32_t n, double box, Rng& rng) {
     }
     if (ok) return positions;
   }
-  // Lattice with random vacancies and jitter. d = 2: k sites per row, an even number m of rows,
-  // odd rows shifted by half a spacing (a triangular lattice when the box allows it), the (k, m)
-  // with k m >= N that maximises the nearest-site distance; that reaches n = 1.1 (packing 0.86,
-  // above random close packing) for N = 1000. d = 3: a simple cubic lattice (n < ~1).
-  std::int64_t per_row = 0, rows = 0;  // d = 2
-  double nearest = 0;                  // nearest-site distance of the chosen lattice
-  if constexpr (D == 2) {
-    const auto k_max = static_cast<std::int64_t>(std::floor(box));
-    for (std::int64_t k = 1; k <= k_max; ++k) {
-      std::int64_t m = (n + k - 1) / k;
-      m += m % 2;  // even: the shifted rows must match across the periodic boundary
-      const double a = box / static_cast<double>(k), h = box / static_cast<double>(m);
-      const double d = std::min({a, std::sqrt(0.25 * a * a + h * h), 2.0 * h});
-      if (d > nearest) {
-        nearest = d;
-        per_row = k;
-        rows = m;
-      }
-    }
-  } else {
-    std::int64_t m = static_cast<std::int64_t>(std::ceil(std::cbrt(static_cast<double>(n)) - 1e-9));
-    while (m * m * m < n) ++m;
-    per_row = m;
-    nearest = box / static_cast<double>(m);
-  }
-  if (nearest <= 1.0 + 1e-9) {
-    // Lattice distances scale with L ~ n^(-1/d): the densest start this lattice gives for this N.
-    const double density = static_cast<double>(n) / std::pow(box, D);
-    const double reachable = density * std::pow(nearest, D) / (1.0 + 1e-6);
-    throw std::runtime_error(
-        "density " + std::to_string(density) +
-        " is too high to generate a non-overlapping initial state for N = " + std::to_string(n) +
-        (D == 2 ? " disks (a staggered lattice with vacancies reaches n < "
-                : " spheres (a simple cubic lattice with vacancies reaches n < ") +
-        std::to_string(reachable) + " for this N; close packing is " +
-        std::to_string(D == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0)) + ")");
-  }
+  const StartLattice lattice = start_lattice(D, n, box);
+  const std::int64_t per_row = lattice.per_row, rows = lattice.rows;
+  const double nearest = lattice.nearest;
+  if (!lattice.fits()) throw std::runtime_error(too_dense_message(D, n, box));
   const std::int64_t sites = D == 2 ? per_row * rows : per_row * per_row * per_row;
   std::vector<std::int64_t> site(static_cast<std::size_t>(sites));
   for (std::int64_t s = 0; s < sites; ++s) site[static_cast<std::size_t>(s)] = s;

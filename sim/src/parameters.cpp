@@ -3,9 +3,11 @@
 #include "molchaos/sim/parameters.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "molchaos/sim/dsmc.hpp"
+#include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::sim {
@@ -70,6 +72,20 @@ void validate(const Parameters& p) {
                                 " gives a box side " + number(side) +
                                 " below 4 sigma at this density; the allowed range is N >= " +
                                 number(std::ceil(p.density * std::pow(4.0, p.dimension))));
+  // Below close packing but above what the initial state can reach for this N: refused here, as
+  // a usage error, rather than after the work has started.
+  // (Dilute starts, packing below 0.2, always fit; the lattice search is then not needed.)
+  const double packing =
+      (p.dimension == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) * p.density;
+  if (packing >= 0.2 && !start_lattice(p.dimension, p.particles, side).fits())
+    out_of_range("density", number(p.density),
+                 "(0, " + number(densest_start(p.dimension, p.particles, side)) + ") for N = " +
+                     std::to_string(p.particles) +
+                     (p.dimension == 2
+                          ? " disks: the densest initial state, a staggered lattice with vacancies,"
+                          : " spheres: the densest initial state, a simple cubic lattice with "
+                            "vacancies,") +
+                     " reaches no further (close packing is " + number(n_max) + ")");
 }
 
 }  // namespace molchaos::sim

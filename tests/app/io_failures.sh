@@ -77,6 +77,22 @@ if mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
     rm -f small/*
   done
   echo "ok: full disk"
+  # A full cache disk: the sweep (and reproduce) stops with exit 1 naming the cache folder and
+  # the reason, instead of counting runs as failed (which once surfaced in reproduce as
+  # "Fig3Data.curves[0].t is empty"); no temporary left, no summary written.
+  umount small && mount -t tmpfs -o size=8k tmpfs small || fail "remount"
+  "$bin" sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 4 --quiet --threads 2 --cache small --out full.csv > /dev/null 2> err.txt
+  s=$?
+  [ "$s" -eq 1 ] || fail "full cache disk gave status $s: $(cat err.txt)"
+  grep -q "cannot store a run in the cache small: .*No space left" err.txt || fail "full cache not named: $(cat err.txt)"
+  [ ! -e full.csv ] || fail "a summary was written although the cache failed"
+  [ -z "$(ls -A small | grep -v '\.csv$' || true)" ] || fail "temporaries left in the full cache: $(ls -A small)"
+  "$bin" reproduce --quick --seeds 1 --threads 1 --no-figures --cache small --out rep > /dev/null 2> err.txt
+  s=$?
+  [ "$s" -eq 1 ] || fail "reproduce on a full cache disk gave status $s"
+  grep -q "cannot store a run in the cache small: .*No space left" err.txt || fail "reproduce: full cache not named: $(tail -n 3 err.txt)"
+  rm -f small/* small/.*.molchaos-tmp.* 2>/dev/null
+  echo "ok: full cache disk"
 else
   echo "note: cannot mount a tmpfs here; full-disk case not run"
 fi

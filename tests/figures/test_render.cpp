@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
@@ -340,4 +341,35 @@ BOOST_AUTO_TEST_CASE(gnuplot_failure_throws_runtime_error_with_its_message) {
     BOOST_TEST(std::string(e.what()).find("exit status 1") != std::string::npos);
   }
   BOOST_TEST(fs::is_empty(out.path));
+}
+
+// While gnuplot runs, the outputs and the script exist only under the atomic writer's temporary
+// names (".<file>.molchaos-tmp.<host>.<pid>.<16 hex digits>"), the one pattern that
+// sim::remove_stale_temporaries clears after a killed run; on failure none is left.
+BOOST_AUTO_TEST_CASE(temporaries_carry_the_atomic_writers_names) {
+  const OutputDirectory out("temporary_names");
+  const fs::path tool = fs::temp_directory_path() /
+                        ("molchaos_fake_gnuplot_" + std::to_string(std::random_device{}()));
+  fs::create_directories(tool);
+  const fs::path record = tool / "names.txt";
+  {
+    std::ofstream script(tool / "gnuplot");
+    // Arguments as render() passes them: -e <assignments> <script>.
+    script << "#!/bin/sh\nls -A \"$(dirname \"$3\")\" > '" << record.string() << "'\nexit 1\n";
+  }
+  fs::permissions(tool / "gnuplot", fs::perms::owner_all);
+  auto options = out.options();
+  options.gnuplot_executable = (tool / "gnuplot").string();
+  BOOST_CHECK_THROW(fig::render_b(synthetic_b(), options), std::runtime_error);
+  std::ifstream in(record);
+  const std::regex pattern(
+      R"(\.fig_b_of_eps\.(png|pdf|gp)\.molchaos-tmp\.[^./]+\.[0-9]+\.[0-9a-f]{16})");
+  int names = 0;
+  for (std::string name; std::getline(in, name); ++names) {
+    BOOST_TEST_INFO(name);
+    BOOST_TEST(std::regex_match(name, pattern));
+  }
+  BOOST_TEST(names == 1);  // the script (gnuplot writes the images)
+  BOOST_TEST(fs::is_empty(out.path));
+  fs::remove_all(tool);
 }

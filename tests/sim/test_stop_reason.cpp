@@ -21,10 +21,25 @@ BOOST_AUTO_TEST_CASE(collapse_and_stall_name_the_time_and_threshold) {
              "numerical dead-lock in the engine; please report it with the parameters)");
 }
 
+BOOST_AUTO_TEST_CASE(a_collapse_with_the_tc_model_does_not_suggest_turning_it_on) {
+  const std::string text = describe(StopReason::collapse, 12.5, 1e-6);
+  BOOST_TEST(text.find("tc > 0") == std::string::npos, text);
+  BOOST_TEST(text.find("tc = 1e-06") != std::string::npos, text);
+  BOOST_TEST(text.find("a larger tc") != std::string::npos, text);
+}
+
+BOOST_AUTO_TEST_CASE(event_bound_and_temperature_floor_name_the_time) {
+  BOOST_TEST(describe(StopReason::max_events, 1e23).find("max_events: ") == 0u);
+  BOOST_TEST(describe(StopReason::max_events, 1e23).find("t = 1e+23") != std::string::npos);
+  BOOST_TEST(describe(StopReason::temperature_floor, 2.5e151).find(
+                 "temperature_floor: T/T0 fell below 1e-300") == 0u);
+}
+
 BOOST_AUTO_TEST_CASE(every_text_parses_back_to_its_reason) {
   for (const StopReason reason :
        {StopReason::t_end, StopReason::max_collisions, StopReason::min_temperature,
-        StopReason::collapse, StopReason::stalled}) {
+        StopReason::collapse, StopReason::stalled, StopReason::max_events,
+        StopReason::temperature_floor}) {
     const auto parsed = parse_stop_reason(describe(reason, 1.25));
     BOOST_REQUIRE(parsed.has_value());
     BOOST_TEST((*parsed == reason), to_string(reason));

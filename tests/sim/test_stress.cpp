@@ -125,6 +125,8 @@ BOOST_DATA_TEST_CASE(dense_spheres_generate_and_relax_without_overlap, data::mak
   BOOST_TEST(engine.min_pair_distance() >= k_min_distance);
 }
 
+// Below close packing but above the densest start for this N: a usage error of validate() (the
+// CLI exits 2 naming --density and the reachable range) before any work, not a failure of the run.
 BOOST_AUTO_TEST_CASE(too_dense_start_fails_with_a_clear_message) {
   for (const auto& [dimension, density] : {std::pair{2, 1.12}, std::pair{2, 1.15},
                                            std::pair{3, 1.05}, std::pair{3, 1.4}}) {
@@ -134,18 +136,22 @@ BOOST_AUTO_TEST_CASE(too_dense_start_fails_with_a_clear_message) {
     p.density = density;
     std::string message;
     try {
-      if (dimension == 2)
-        Engine<2> engine(p);
-      else
-        Engine<3> engine(p);
-    } catch (const std::runtime_error& e) {
+      validate(p);
+    } catch (const std::invalid_argument& e) {
       message = e.what();
     }
     BOOST_TEST_MESSAGE("d = " << dimension << ", n = " << density << ": " << message);
-    BOOST_TEST(message.find("density") != std::string::npos);
-    BOOST_TEST(message.find("too high") != std::string::npos);
+    BOOST_TEST(message.find("density: value") == 0u, message);
+    BOOST_TEST(message.find(dimension == 2 ? "(0, 1.11111" : "(0, 0.99999") != std::string::npos,
+               message);
     BOOST_TEST(message.find("close packing") != std::string::npos);
+    BOOST_CHECK_THROW(dimension == 2 ? (void)Engine<2>(p) : (void)Engine<3>(p),
+                      std::invalid_argument);
   }
+  Parameters reachable;  // just below the limit: starts
+  reachable.particles = 1000;
+  reachable.density = 1.11;
+  BOOST_CHECK_NO_THROW(validate(reachable));
 }
 
 BOOST_AUTO_TEST_CASE(particle_count_limits) {
@@ -272,5 +278,113 @@ BOOST_AUTO_TEST_CASE(very_dilute_gas_runs_in_memory_proportional_to_n) {
                               << " bytes");
     BOOST_TEST(bytes < 200u * 4096u);
     BOOST_TEST(energy_after == energy, tt::tolerance(1e-12));
+  }
+}
+
+// A cooling run over 40 decades of T (the flux shuffle keeps the gas homogeneous, N = 500,
+// eps = 0.5, to t = 1e23): collisions conserve momentum only up to rounding, and without care the
+// centre of mass keeps a drift that ends up holding the kinetic energy (T froze at 8.7e-35 while
+// the peculiar T was 7.5e-42, and the drifting gas crossed cells for ever without colliding).
+// The engine removes the drift when it matters: the run reaches t_end in some 65000 collisions,
+// its T keeps following the cooling, and the drift's share of the energy stays below 1e-9.
+BOOST_AUTO_TEST_CASE(cooling_over_forty_decades_keeps_the_centre_of_mass_at_rest) {
+  Parameters p;
+  p.particles = 500;
+  p.restitution = 0.5;
+  p.randomize = Randomization::flux;
+  p.t_end = 1e23;
+  p.max_collisions = 300000;
+  Engine<2> engine(p);
+  engine.relax(p.relax_collisions_per_particle);
+  auto status = engine.advance_to(p.t_end, 1u << 20);
+  while (status == Engine<2>::Status::paused && engine.events() < 50'000'000)
+    status = engine.advance_to(p.t_end, 1u << 20);
+  BOOST_REQUIRE((status == Engine<2>::Status::reached));
+  const auto momentum = engine.momentum();
+  double drift_energy = 0;
+  for (const double component : momentum) drift_energy += component * component / (2.0 * 500);
+  BOOST_TEST_MESSAGE("t = 1e23: T = " << engine.temperature() << " after " << engine.collisions()
+                                      << " collisions, " << engine.events()
+                                      << " events; drift's share of the energy "
+                                      << drift_energy / engine.kinetic_energy());
+  BOOST_TEST(engine.temperature() < 1e-40);
+  BOOST_TEST(drift_energy < 1e-9 * engine.kinetic_energy());
+}
+
+// Cooling without end (t_end = 1e300): the run stops with temperature_floor when T/T0 falls
+// below 1e-300, where theta^2 would overflow, instead of reporting T = 0 or running for ever.
+BOOST_AUTO_TEST_CASE(cooling_stops_at_the_floor_of_double_precision) {
+  Parameters p;
+  p.particles = 500;
+  p.restitution = 0.5;
+  p.randomize = Randomization::flux;
+  p.t_end = 1e300;
+  p.max_collisions = 5'000'000;
+  const RunResult r = run(p);
+  BOOST_REQUIRE(!r.samples.empty());
+  BOOST_TEST_MESSAGE(stop_message(r) << "; T = " << r.samples.back().temperature << " after "
+                                     << r.collisions << " collisions");
+  BOOST_TEST((r.stop_reason == StopReason::temperature_floor));
+  BOOST_TEST(r.samples.back().temperature < k_temperature_floor);
+  BOOST_TEST(r.samples.back().temperature > 0.01 * k_temperature_floor);
+  BOOST_TEST(std::isfinite(r.samples.back().t));
+}
+
+// A gas that never collides (16 disks on separate lines, moving along them in opposite
+// directions) only crosses cells: with a collision limit, the run ends at the event bound that
+// limit implies (stop reason max_events) instead of running to t_end.
+BOOST_AUTO_TEST_CASE(a_gas_that_stops_colliding_ends_at_the_event_bound) {
+  Parameters p;
+  p.particles = 16;
+  p.density = 0.05;
+  p.t_end = 1e12;
+  p.relax_collisions_per_particle = 0;
+  Engine<2> engine(p);
+  std::vector<double> positions, velocities;
+  for (int k = 0; k < 16; ++k) {
+    positions.insert(positions.end(), {0.5 + 1.0 * k, 0.5 + 1.1 * k});
+    velocities.insert(velocities.end(), {k % 2 == 0 ? 1.0 : -1.0, 0.0});
+  }
+  engine.set_state(positions, velocities);
+  engine.set_collision_limit(10);
+  BOOST_REQUIRE(engine.event_limit() > 0u);
+  BOOST_TEST((engine.advance_to(p.t_end) == Engine<2>::Status::stopped));
+  BOOST_TEST((engine.stop_reason() == StopReason::max_events));
+  BOOST_TEST(engine.collisions() == 0u);
+  BOOST_TEST(engine.events() == engine.event_limit());
+  BOOST_TEST(engine.time() < p.t_end);
+}
+
+// The event bound leaves ordinary runs alone: dilute and dense, 2D and 3D (cells and neighbour
+// lists), with and without a shuffle, each stops at max_collisions, using a small fraction of
+// the events the bound allows.
+BOOST_AUTO_TEST_CASE(the_event_bound_leaves_ordinary_runs_alone) {
+  struct Case {
+    int dimension;
+    double density;
+    Randomization shuffle;
+  };
+  for (const Case c : {Case{2, 1e-4, Randomization::none}, Case{2, 0.05, Randomization::paper},
+                       Case{2, 0.7, Randomization::flux}, Case{3, 0.1, Randomization::none},
+                       Case{3, 0.6, Randomization::paper}}) {
+    Parameters p;
+    p.dimension = c.dimension;
+    p.particles = 1000;
+    p.density = c.density;
+    p.randomize = c.shuffle;
+    p.restitution = 0.9;
+    p.t_end = 1e12;
+    p.max_collisions = 20000;
+    const RunResult r = run(p);
+    const double allowed_per_collision =
+        static_cast<double>(c.dimension == 2 ? Engine<2>(p).event_limit()
+                                             : Engine<3>(p).event_limit()) /
+        static_cast<double>(p.max_collisions);
+    const double used = static_cast<double>(r.events) / static_cast<double>(r.collisions);
+    BOOST_TEST_MESSAGE("d = " << c.dimension << ", n = " << c.density << ", " << to_string(c.shuffle)
+                              << ": " << used << " events per collision, "
+                              << used / allowed_per_collision << " of the bound");
+    BOOST_TEST((r.stop_reason == StopReason::max_collisions));
+    BOOST_TEST(used < 0.1 * allowed_per_collision);
   }
 }

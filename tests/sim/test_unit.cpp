@@ -144,7 +144,9 @@ BOOST_AUTO_TEST_CASE(validation_names_the_field) {
   BOOST_TEST(message(p).empty());
   p.density = 1.2;
   BOOST_TEST(message(p).rfind("density: value 1.2 is outside the allowed range", 0) == 0);
-  p.dimension = 3;  // close packing is higher in 3D
+  p.dimension = 3;  // below close packing in 3D, but above the densest start for N = 5000
+  BOOST_TEST(message(p).rfind("density: value 1.2 is outside the allowed range (0, 0.857", 0) == 0);
+  p.density = 0.8;
   BOOST_TEST(message(p).empty());
   p = {};
   p.restitution = 0;

@@ -164,3 +164,13 @@ BOOST_AUTO_TEST_CASE(sweep_spec_validation) {
   s.restitutions = {1.5};
   BOOST_CHECK_THROW(validate(s), std::invalid_argument);
 }
+
+// A point where no run succeeded has no A: nan (printed as such in every table), not 0.
+BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
+  const PointSummary s = summarize_point({}, WindowRule{});
+  BOOST_TEST(s.runs == 0);
+  BOOST_TEST(std::isnan(s.A.value));
+  BOOST_TEST(std::isnan(s.A.error));
+  BOOST_TEST(std::isnan(s.a2.value));
+  BOOST_TEST(std::isnan(s.mean_dyad.value));
+}

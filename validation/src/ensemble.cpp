@@ -100,6 +100,9 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         } else {
           r.summary.runs = static_cast<int>(group.size());
           r.collision_ratio = mean_and_standard_error(ratios);
+          if (ratios.empty())
+            r.collision_ratio = {std::numeric_limits<double>::quiet_NaN(),
+                                 std::numeric_limits<double>::quiet_NaN()};
         }
         r.summary.dimension = spec.dimension;
         r.summary.density = n;
@@ -127,6 +130,8 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     run.method = s.method;
     const sim::ParameterInfo& method = *sim::find_parameter("method");
     if (!sim::omitted(run, method)) out << "# method = " << sim::format_value(run, method) << "\n";
+    out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
+           "succeeded (runs = 0, failed = their number)\n";
     out << "density,restitution,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";

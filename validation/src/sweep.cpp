@@ -120,15 +120,20 @@ bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult
 
 void store_cached(const sim::RunResult& r, const SweepOptions& o) {
   if (o.cache_directory.empty()) return;
-  std::filesystem::create_directories(o.cache_directory);
   std::ostringstream csv;
   sim::write_csv(r, csv);
   const std::string content = csv.str();
-  sim::write_file_atomically(cache_path(r.parameters, o), [&](std::ostream& out) {
-    out << k_key_line << cache_key(r.parameters, o.version) << '\n'
-        << k_checksum_line << fnv1a64(content) << '\n'
-        << content;
-  });
+  try {
+    std::filesystem::create_directories(o.cache_directory);
+    sim::write_file_atomically(cache_path(r.parameters, o), [&](std::ostream& out) {
+      out << k_key_line << cache_key(r.parameters, o.version) << '\n'
+          << k_checksum_line << fnv1a64(content) << '\n'
+          << content;
+    });
+  } catch (const std::exception& e) {
+    throw CacheWriteError("cannot store a run in the cache " + o.cache_directory + ": " +
+                          e.what());
+  }
 }
 
 sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& o) {
@@ -154,15 +159,22 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
   SweepReporter reporter(o, runs.size(), threads);
+  std::mutex storage_mutex;
+  std::string storage_error;  // the first CacheWriteError: the sweep stops at it
+  std::atomic<bool> storage_failed{false};
   auto worker = [&] {
     for (;;) {
       const std::size_t i = next.fetch_add(1);
-      if (i >= runs.size()) return;
+      if (i >= runs.size() || storage_failed) return;
       RunOutcome& outcome = out[i];
       try {
         outcome.from_cache = load_cached(runs[i], o, outcome.result);
         if (!outcome.from_cache) outcome.result = run_and_cache(runs[i], o);
         outcome.ok = true;
+      } catch (const CacheWriteError& e) {
+        const std::lock_guard lock(storage_mutex);
+        if (!storage_failed.exchange(true)) storage_error = e.what();
+        return;
       } catch (const std::exception& e) {
         reporter.failed(i, runs[i], e.what(), outcome);
       }
@@ -172,6 +184,7 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
+  if (storage_failed) throw CacheWriteError(storage_error);
   return out;
 }
 

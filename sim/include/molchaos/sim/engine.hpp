@@ -73,7 +73,7 @@ class Engine {
   std::uint64_t events() const { return events_; }
   /// Why the engine stopped (meaningful after Status::stopped), and the CSV text for it.
   StopReason stop_reason() const { return stop_reason_; }
-  std::string stop_message() const { return describe(stop_reason_, time()); }
+  std::string stop_message() const { return describe(stop_reason_, time(), model_.tc.duration); }
   Observer& observer() { return observer_; }
   const Observer& observer() const { return observer_; }
   int cells_per_side() const { return cells_per_side_; }
@@ -99,9 +99,12 @@ class Engine {
 
   const CollisionModel& collision_model() const { return model_; }
 
-  /// Stop conditions (no physics): after `limit` collisions in all (0 = none), when T falls below
-  /// t_min (0 = never).
-  void set_collision_limit(std::uint64_t limit) { collision_limit_ = limit; }
+  /// Stop conditions (no physics): after `limit` collisions in all (0 = none), or after the
+  /// events they imply (event_limit()), when T falls below t_min (0 = never).
+  void set_collision_limit(std::uint64_t limit);
+  /// The event bound of the collision limit (0 = none): limit * k_events_per_expected_event
+  /// times the events per collision of a homogeneous gas at this density and cell size.
+  std::uint64_t event_limit() const { return event_limit_; }
   void set_min_temperature(double t_min) { min_temperature_ = t_min; }
   /// Clears a fired stop condition (max_collisions, min_temperature) so the run can go on.
   void resume() {
@@ -151,6 +154,7 @@ class Engine {
   void collect_neighbours(std::int32_t i, bool only_higher);
   void advance_particle(std::int32_t i);
   void resync();
+  void remove_momentum_drift();
   void rebuild_events();
   void sort_by_cell();
   void build_cells();
@@ -240,6 +244,8 @@ class Engine {
   // The run's physics, and its stop conditions.
   const CollisionModel model_;
   std::uint64_t collision_limit_ = 0;
+  std::uint64_t event_limit_ = 0;  // from collision_limit_ (set_collision_limit)
+  double events_per_collision_ = 1;  // of a homogeneous gas (constructor)
   double min_temperature_ = 0;
   std::uint64_t debug_check_every_ = 0;
   Rng shuffle_rng_;

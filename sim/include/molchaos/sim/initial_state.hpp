@@ -4,11 +4,25 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "molchaos/sim/rng.hpp"
 
 namespace molchaos::sim {
+
+/// The lattice a dense start uses (see place_particles): sites per row, rows (d = 2), and the
+/// nearest-site distance; it holds n unit spheres without overlap when that exceeds 1 + 1e-9.
+struct StartLattice {
+  std::int64_t per_row = 0, rows = 0;
+  double nearest = 0;
+  bool fits() const { return nearest > 1.0 + 1e-9; }
+};
+StartLattice start_lattice(int dimension, std::int64_t n, double box);
+/// The highest density at which place_particles can start n particles (about that of this box).
+double densest_start(int dimension, std::int64_t n, double box);
+/// "density X is too high to generate ... reaches n < Y for this N; close packing is Z".
+std::string too_dense_message(int dimension, std::int64_t n, double box);
 
 /// n non-overlapping unit spheres (pair distances > 1 + 1e-9) in [0, box)^D, particle-major.
 /// Random sequential insertion while the packing fraction is low (< 0.25 disks, < 0.2 spheres)

@@ -140,7 +140,8 @@ inline const std::array<ParameterInfo, 16>& parameter_table() {
        &P::max_collisions,
        {0, true, 18446744073709551615.0, true},
        "",
-       "Stop after this many collisions (0 = no)"},
+       "Stop after this many collisions, or after the events they imply (100 times a "
+       "homogeneous gas's events per collision; 0 = no limit)"},
       {"min_temperature",
        "--min-temperature",
        &P::min_temperature,

@@ -58,7 +58,7 @@ struct RunResult {
 
 /// The stop reason's text, as in the CSV header (its time is that of the last sample).
 inline std::string stop_message(const RunResult& r) {
-  return describe(r.stop_reason, r.samples.empty() ? 0.0 : r.samples.back().t);
+  return describe(r.stop_reason, r.samples.empty() ? 0.0 : r.samples.back().t, r.parameters.tc);
 }
 
 }  // namespace molchaos::sim

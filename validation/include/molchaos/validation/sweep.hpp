@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -66,8 +67,15 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
 bool load_cached(const sim::Parameters& p, const SweepOptions& options, sim::RunResult& out);
 /// The one place a run's cache file lives: <cache_directory>/<cache_key>.csv.
 std::string cache_path(const sim::Parameters& p, const SweepOptions& options);
+/// A cache entry could not be written (a full disk, a folder gone): a failure of the sweep's
+/// storage, not of the run. The message names the cache folder and the reason; the local sweep
+/// stops at it instead of counting the run as failed.
+struct CacheWriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 /// Stores a run under its key with a checksum of its content (atomically); no-op without cache.
-/// load_cached reports an entry whose key or checksum does not match and recomputes it.
+/// load_cached reports an entry whose key or checksum does not match and recomputes it. Throws
+/// CacheWriteError.
 void store_cached(const sim::RunResult& result, const SweepOptions& options);
 /// Runs one parameter set and stores it in the cache; throws on failure.
 sim::RunResult run_and_cache(const sim::Parameters& p, const SweepOptions& options);
