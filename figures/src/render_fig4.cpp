@@ -19,6 +19,7 @@ std::string point_type(const std::string& mode, std::size_t index) {
   if (mode == "none") return "9";   // filled triangle
   if (mode == "paper") return "5";  // filled square
   if (mode == "flux") return "4";   // open square
+  if (mode == "dsmc") return "6";   // open circle
   constexpr std::array<const char*, 4> k_others{"7", "11", "13", "6"};
   return k_others[index % k_others.size()];
 }
@@ -27,6 +28,7 @@ std::size_t colour_index(const std::string& mode, std::size_t index) {
   if (mode == "none") return 1;
   if (mode == "paper") return 2;
   if (mode == "flux") return 3;
+  if (mode == "dsmc") return 4;
   return 4 + index;
 }
 

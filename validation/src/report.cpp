@@ -136,13 +136,18 @@ std::string fig4_tables(const ReproduceResults& r) {
       "a2 (theory) is the first-Sonine a2(ε) (van Noije & Ernst), which that A uses.\n\n| n | ε "
       "| mode | A (sim) | runs | A (theory, b = 0) | diff [SE] | a2 (sim) | a2 (theory) "
       "|\n|---|---|---|---|---|---|---|---|---|\n";
-  for (const auto& p : r.fig4_points) {
+  // The MD modes, then DSMC (mode "dsmc", molecular chaos by construction).
+  std::vector<std::pair<const PointResult*, std::string>> rows;
+  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
+  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
+  for (const auto& [point, mode] : rows) {
+    const PointResult& p = *point;
     const auto& m = p.summary;
     const double se = std::hypot(m.A.error, p.A_theory.error);
     s += fmt::format(
         "| {} | {:.2f} | {} | {:.5f} ± {:.5f} | {} | {:.5f} | {:+.2f} | {:.4f} ± {:.4f} | {:.4f} "
         "|\n",
-        m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
+        m.density, m.restitution, mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
         se > 0 ? (m.A.value - p.A_theory.value) / se : 0.0, m.a2.value, m.a2.error,
         theory::a2_first_sonine(m.dimension, m.restitution));
   }

@@ -41,6 +41,7 @@ namespace steps {
 std::string mode_label(const std::string& mode) {
   if (mode == "none") return "original gas (no shuffle)";
   if (mode == "paper") return "randomized: paper's shuffle";
+  if (mode == "dsmc") return "DSMC (molecular chaos by construction)";
   return "randomized: flux-weighted shuffle";
 }
 
@@ -51,6 +52,12 @@ const PointResult& find_point(const ReproduceResults& r, double density, double 
         p.summary.mode == mode)
       return p;
   throw std::logic_error("reproduce: no Fig. 4 point at the requested state");
+}
+
+const PointResult& find_dsmc_point(const ReproduceResults& r, double density, double restitution) {
+  for (const auto& p : r.dsmc_points)
+    if (p.summary.density == density && p.summary.restitution == restitution) return p;
+  throw std::logic_error("reproduce: no DSMC point at the requested state");
 }
 
 double mu2_ratio_at_b0(const theory::ExpansionTable& c, double a2) {
@@ -89,6 +96,8 @@ constexpr ClaimStep k_claims[] = {
     // the suite's own findings
     steps::finding_elastic_limit,
     steps::finding_flux_follows_haff,
+    steps::finding_flux_equals_dsmc,
+    steps::finding_paper_shuffle_against_dsmc,
     steps::finding_b_two_ways,
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,
@@ -182,6 +191,12 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   R.elastic_spec.restitutions = {1.0};
   R.elastic_spec.t_end_elastic = cfg.elastic_t_end;
   R.elastic_spec.contact_statistics = false;
+  // DSMC runs cost milliseconds: several times the MD's seeds buy error bars several times
+  // smaller, so that a difference between the flux gas and DSMC is the MD's to explain.
+  R.dsmc_spec = R.fig4_spec;
+  R.dsmc_spec.method = sim::Method::dsmc;
+  R.dsmc_spec.modes = {sim::Randomization::none};
+  R.dsmc_spec.seeds = steps::k_dsmc_seed_factor * cfg.seeds;
 }
 
 // One sweep for all three ensembles (one load-balanced pool), then the summaries per point.
@@ -189,20 +204,25 @@ void run_ensembles(ReproduceResults& R, const ReproduceConfig& cfg, const SweepO
   define_ensembles(R, cfg);
   std::vector<sim::Parameters> all;
   const auto p4 = expand(R.fig4_spec), p3 = expand(R.fig3_spec), pe = expand(R.elastic_spec);
+  const auto pd = expand(R.dsmc_spec);
   all.insert(all.end(), p4.begin(), p4.end());
   all.insert(all.end(), p3.begin(), p3.end());
   all.insert(all.end(), pe.begin(), pe.end());
+  all.insert(all.end(), pd.begin(), pd.end());
   const auto outcomes = run_sweep(all, sweep);
   record_failures(R, outcomes);
   const auto n4 = static_cast<std::ptrdiff_t>(p4.size());
   const auto n3 = static_cast<std::ptrdiff_t>(p3.size());
   const std::vector<RunOutcome> o4(outcomes.begin(), outcomes.begin() + n4);
   R.fig3_runs.assign(outcomes.begin() + n4, outcomes.begin() + n4 + n3);
-  const std::vector<RunOutcome> oe(outcomes.begin() + n4 + n3, outcomes.end());
+  const auto ne = static_cast<std::ptrdiff_t>(pe.size());
+  const std::vector<RunOutcome> oe(outcomes.begin() + n4 + n3, outcomes.begin() + n4 + n3 + ne);
+  const std::vector<RunOutcome> od(outcomes.begin() + n4 + n3 + ne, outcomes.end());
   R.fig4_points = summarize(R.fig4_spec, o4, cfg.window);
   add_seeds_where_needed(R, cfg, sweep);
   R.fig3_points = summarize(R.fig3_spec, R.fig3_runs, cfg.window);
   R.elastic_points = summarize(R.elastic_spec, oe, cfg.window);
+  R.dsmc_points = summarize(R.dsmc_spec, od, cfg.window);
   R.fig3_original = R.fig3_points.at(0);
 }
 

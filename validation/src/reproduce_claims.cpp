@@ -376,6 +376,7 @@ Claim finding_b_two_ways(const ReproduceResults& R) {
             contact.b[j], suite.b[i], std::nullopt, agreement(suite.b[i], contact.b[j]), "", "",
             "'theory' column: contact statistics; 'simulation': suite's inversion of A");
         row.verdict = "see the global test";
+        row.rule = k_information_rule;
         c.rows.push_back(std::move(row));
       }
   }

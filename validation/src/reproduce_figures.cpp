@@ -18,14 +18,16 @@ namespace {
 constexpr int k_dimension = 2;
 
 // One gas of Fig. 4's panel at density n: its A(ε) points and their straight-line fit.
-ASeries a_series(const ReproduceResults& R, double n, sim::Randomization mode) {
+// One series of Fig. 4: A(ε) of an ensemble's points at density n, with its straight-line fit.
+// `mode` is a randomization's name, or "dsmc" for the DSMC ensemble.
+ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   ASeries s;
-  s.mode = std::string(sim::to_string(mode));
+  s.mode = mode;
   s.label = mode_label(s.mode);
   std::vector<double> x;
   std::vector<Measurement> y;
   for (double e : R.config.restitutions) {
-    const auto& p = find_point(R, n, e, s.mode);
+    const auto& p = mode == "dsmc" ? find_dsmc_point(R, n, e) : find_point(R, n, e, s.mode);
     if (p.summary.runs == 0) continue;
     s.points.push_back({e, p.summary.A, p.summary.runs});
     x.push_back(e);
@@ -43,7 +45,9 @@ void figure_fig4(ReproduceResults& R) {
   for (double n : cfg.densities) {
     Fig4Panel panel;
     panel.density = n;
-    for (auto mode : k_modes) panel.series.push_back(a_series(R, n, mode));
+    for (auto mode : k_modes)
+      panel.series.push_back(a_series(R, n, std::string(sim::to_string(mode))));
+    panel.series.push_back(a_series(R, n, "dsmc"));
     // Kinetic theory, b = 0: A = 1/(ω0 μ2/μ2(0,0)) with the first-Sonine a2(ε).
     for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
       panel.theory_restitution.push_back(e);
@@ -72,8 +76,8 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
       paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
   paper_way.restitution.push_back(e);
   const double coefficient_b = -theory::k_paper_coefficient_b;
-  paper_way.b.push_back({diff.value * omega0_paper / coefficient_b,
-                         diff.error * omega0_paper / coefficient_b});
+  paper_way.b.push_back(
+      {diff.value * omega0_paper / coefficient_b, diff.error * omega0_paper / coefficient_b});
   const double a2 = theory::a2_first_sonine(k_dimension, e);
   const double R0 = mu2_ratio_at_b0(R.coefficients, a2);
   const double cb = mu2_ratio_b_slope(R.coefficients, a2);

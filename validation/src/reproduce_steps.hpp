@@ -15,12 +15,23 @@ namespace molchaos::validation::steps {
 inline const std::vector<sim::Randomization> k_modes{
     sim::Randomization::none, sim::Randomization::paper, sim::Randomization::flux};
 
+/// DSMC seeds per Fig. 4 point, as a multiple of the MD's.
+inline constexpr int k_dsmc_seed_factor = 4;
+
+/// The rule column of a per-point row that informs a claim decided by one global test.
+inline constexpr const char* k_information_rule =
+    "per point for information; the claim's χ² decides";
+
 /// Legend text of a mode ("none", "paper", "flux").
 std::string mode_label(const std::string& mode);
 
 /// The Fig. 4 ensemble's point at (density, restitution, mode); throws if absent.
 const PointResult& find_point(const ReproduceResults& results, double density, double restitution,
                               const std::string& mode);
+
+/// The DSMC ensemble's point at (density, restitution); throws if absent.
+const PointResult& find_dsmc_point(const ReproduceResults& results, double density,
+                                   double restitution);
 
 /// The suite's coefficients of μ2/μ2(0,0) at a2, b = 0 (its A up to ω0), and ∂/∂b.
 double mu2_ratio_at_b0(const theory::ExpansionTable& table, double a2);
@@ -46,6 +57,8 @@ Claim claim_clustering_onset(const ReproduceResults& results);
 Claim finding_elastic_limit(const ReproduceResults& results);
 Claim finding_flux_follows_haff(const ReproduceResults& results);
 Claim finding_b_two_ways(const ReproduceResults& results);
+Claim finding_flux_equals_dsmc(const ReproduceResults& results);
+Claim finding_paper_shuffle_against_dsmc(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);

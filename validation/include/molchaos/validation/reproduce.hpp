@@ -57,8 +57,9 @@ struct Claim {
 struct ReproduceResults {
   ReproduceConfig config;
   std::string version;
-  EnsembleSpec fig4_spec, fig3_spec, elastic_spec;
+  EnsembleSpec fig4_spec, fig3_spec, elastic_spec, dsmc_spec;
   std::vector<PointResult> fig4_points;     ///< all densities × restitutions × modes
+  std::vector<PointResult> dsmc_points;     ///< DSMC (molecular chaos) at the Fig. 4 points
   std::vector<PointResult> elastic_points;  ///< ε = 1, every mode and density
   std::vector<PointResult> fig3_points;     ///< ε = 0.93, n = 0.05, modes none, paper, flux
   PointResult fig3_original;                ///< fig3_points[0]: no shuffle
