@@ -98,6 +98,7 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_flux_follows_haff,
     steps::finding_flux_equals_dsmc,
     steps::finding_paper_shuffle_against_dsmc,
+    steps::finding_dsmc_a2_against_sonine,
     steps::finding_b_two_ways,
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,

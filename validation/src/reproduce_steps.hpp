@@ -59,6 +59,7 @@ Claim finding_flux_follows_haff(const ReproduceResults& results);
 Claim finding_b_two_ways(const ReproduceResults& results);
 Claim finding_flux_equals_dsmc(const ReproduceResults& results);
 Claim finding_paper_shuffle_against_dsmc(const ReproduceResults& results);
+Claim finding_dsmc_a2_against_sonine(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);
