@@ -1,7 +1,8 @@
 // The claims that set the MD gases beside DSMC, whose gas obeys molecular chaos by construction:
 // the flux-shuffled gas should cool as the DSMC gas does (same A at every Fig. 4 point), the
-// paper's shuffle (biased) and the original gas (velocity correlations) need not. Each claim is
-// one global χ² over all points; the per-point rows are information.
+// paper's shuffle (biased) and the original gas (velocity correlations) need not; and DSMC's a2
+// against the Sonine theory's. Each claim is one global χ² over all points; the per-point rows are
+// information.
 #include <fmt/format.h>
 
 #include <algorithm>
