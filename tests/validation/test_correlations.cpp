@@ -203,3 +203,28 @@ BOOST_AUTO_TEST_CASE(closed_form_slopes_agree_with_quadrature) {
       BOOST_TEST(std::abs(Ja.dyad.value / Ja.one.value - (kappa * mca.P - mca.Q)) < 10 * a2 * a2);
     }
 }
+
+BOOST_AUTO_TEST_CASE(molecular_chaos_with_sonine_terms_agrees_with_quadrature) {
+  // The closed forms in full (no linearisation in a2, a3) against the theory library's
+  // quadrature of the same integrals: ⟨D⟩ = (κ − 1)P (P = Q under molecular chaos) and the
+  // normalisation W at a2 ≠ 0; W·Y = μ2(a2, a3)/μ2(0, 0) (energy loss ∝ (g·e)², rate ∝ |g·e|).
+  theory::QuadratureOptions q;
+  q.relative_tolerance = 1e-10;
+  const double a2 = 0.2, a3 = 0.1;  // large, so that the second-order terms matter at 1e-3
+  for (int d : {2, 3}) {
+    const auto J = theory::contact_integrals(d, a2, 3.0, q);
+    const auto J0 = theory::contact_integrals(d, 0.0, 3.0, q);
+    const ContactQuantities exact = molecular_chaos_contact_sonine(a2, 0.0);
+    BOOST_TEST(J.dyad.value / J.one.value == 2.0 * exact.P, boost::test_tools::tolerance(1e-8));
+    BOOST_TEST(J.one.value / J0.one.value == exact.W, boost::test_tools::tolerance(1e-8));
+    const double mu2 =
+        theory::collision_moment(d, 2, 0.5, theory::PairShape{a2, a3, 0.0}, 3.0, q).value /
+        theory::collision_moment(d, 2, 0.5, theory::PairShape{}, 3.0, q).value;
+    const ContactQuantities full = molecular_chaos_contact_sonine(a2, a3);
+    BOOST_TEST(full.W * full.Y == mu2, boost::test_tools::tolerance(1e-8));
+    // The first-order forms are the linearisation: O(a2²) apart, and visibly so here.
+    const ContactQuantities linear = molecular_chaos_contact(a2);
+    BOOST_TEST(std::abs(exact.P - linear.P) > 1e-4);
+    BOOST_TEST(std::abs(exact.P - linear.P) < a2 * a2);
+  }
+}
