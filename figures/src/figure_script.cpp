@@ -294,6 +294,31 @@ void add_plot_element(std::string& plot, const std::string& element) {
   plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
 }
 
+std::string block_name(const std::string& prefix, std::size_t index) {
+  std::string name = prefix;  // appended piecewise (GCC 12 warns falsely on literal + string)
+  name += std::to_string(index);
+  return name;
+}
+
+std::string panel_block_name(std::size_t panel, std::size_t series) {
+  std::string prefix = "p";
+  prefix += std::to_string(panel);
+  prefix += "_s";
+  return block_name(prefix, series);
+}
+
+void add_series(FigureScript& script, std::string& plot, const std::string& block, Rows rows,
+                const std::string& style, std::size_t colour_index, const std::string& title) {
+  script.data.emplace_back(block, std::move(rows));
+  add_plot_element(plot, "$" + block + " using 1:2:3 with " + style + " linecolor rgb " +
+                             colour(colour_index) +
+                             (title.empty() ? std::string(" notitle") : " title " + quote(title)));
+}
+
+std::string dimension_density_title(int dimension, double density) {
+  return "d = " + std::to_string(dimension) + ", n = " + label_number(density);
+}
+
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position) {
   script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);

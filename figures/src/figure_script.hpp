@@ -55,6 +55,19 @@ void begin_log_log(FigureScript& script, const std::string& title, const std::st
 /// Appends one element to a plot command being built ("  plot a, \\\n       b").
 void add_plot_element(std::string& plot, const std::string& element);
 
+/// The name of a data block: prefix followed by index ("p0_s" and 3 give "p0_s3").
+std::string block_name(const std::string& prefix, std::size_t index);
+/// "p<panel>_s<series>": the block of one series of one panel.
+std::string panel_block_name(std::size_t panel, std::size_t series);
+
+/// Stores rows as data block `block` and appends "$block using 1:2:3 with <style>" in colour
+/// `colour` to the plot command; an empty title gives notitle.
+void add_series(FigureScript& script, std::string& plot, const std::string& block, Rows rows,
+                const std::string& style, std::size_t colour, const std::string& title);
+
+/// "d = 2, n = 0.1": the title of a panel of one dimension and density.
+std::string dimension_density_title(int dimension, double density);
+
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position);

@@ -18,23 +18,7 @@ std::string gas_label(const std::string& mode) {
   return mode == "none" ? "original" : "molecular chaos (flux)";
 }
 
-// Appends "$block using ... with yerrorbars/linespoints" for one data set.
-void add_series(detail::FigureScript& script, std::string& plot, const std::string& block,
-                detail::Rows rows, const std::string& style, std::size_t colour,
-                const std::string& title) {
-  script.data.emplace_back(block, std::move(rows));
-  detail::add_plot_element(plot, "$" + block + " using 1:2:3 with " + style + " linecolor rgb " +
-                                     detail::colour(colour) + " title " + detail::quote(title));
-}
-
-// "p<panel>_s<series>", appended piecewise (GCC 12 warns falsely about "literal" + std::string).
-std::string block_name(std::size_t panel, std::size_t series) {
-  std::string name = "p";
-  name += std::to_string(panel);
-  name += "_s";
-  name += std::to_string(series);
-  return name;
-}
+using detail::add_series;
 
 }  // namespace
 
@@ -58,7 +42,7 @@ RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrel
   script.canvas.pdf_height = 3.4;
   std::string& c = script.commands;
   c += "  set multiplot layout 1,2 title " +
-       detail::quote("d = " + std::to_string(dimension) + ", n = " + detail::label_number(density) +
+       detail::quote(detail::dimension_density_title(dimension, density) +
                      ", ε = " + detail::label_number(restitution)) +
        "\n";
   c += "  set logscale x\n  set xlabel 'r/σ'\n  set key top right font font_small box opaque\n";
@@ -81,8 +65,8 @@ RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrel
       const std::string style = std::string("yerrorlines pointtype ") +
                                 (mode == "none" ? "7" : "6") + " pointsize 0.8 dashtype " +
                                 (mode == "none" ? "1" : "2");
-      add_series(script, plot, block_name(static_cast<std::size_t>(which), k), data, style,
-                 time_index + 1,
+      add_series(script, plot, detail::panel_block_name(static_cast<std::size_t>(which), k), data,
+                 style, time_index + 1,
                  gas_label(mode) + ", τ = " + detail::label_number(std::round(tau)));
       ++k;
       ++time_index;
@@ -119,16 +103,14 @@ RenderedFigure render_contact_moments(const std::vector<validation::ContactMomen
             data.push_back({r.restitution + (which - 0.5) * 0.002, m.value, m.error});
           }
         add_series(
-            script, plot, block_name(p, s), data,
+            script, plot, detail::panel_block_name(p, s), data,
             std::string("yerrorbars pointtype ") + (mode == "none" ? "7" : "6"),
             static_cast<std::size_t>(which) + 1,
             std::string(which == 0 ? "<(c_1·e)(c_2·e)>" : "<c_1·c_2>") + ", " + gas_label(mode));
         ++s;
       }
-    script.commands +=
-        "  set title " +
-        detail::quote("d = " + std::to_string(d) + ", n = " + detail::label_number(n)) +
-        "\n  set autoscale\n" + plot + "\n";
+    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
+                       "\n  set autoscale\n" + plot + "\n";
     ++p;
   }
   return detail::render(script, options);
@@ -163,16 +145,14 @@ RenderedFigure render_cooling_decomposition(
       const char* titles[] = {"ln(A_{orig}/A_{chaos}), Haff fit",
                               "ln(ω_{chaos}/ω_{orig}), collision frequency",
                               "ln(Y_{chaos}/Y_{orig}), energy loss per collision"};
-      add_series(script, plot, block_name(p, static_cast<std::size_t>(which)), data,
+      add_series(script, plot, detail::panel_block_name(p, static_cast<std::size_t>(which)), data,
                  std::string("yerrorbars pointtype ") + (which == 0   ? "7"
                                                          : which == 1 ? "5"
                                                                       : "9"),
                  static_cast<std::size_t>(which) + 1, titles[which]);
     }
-    script.commands +=
-        "  set title " +
-        detail::quote("d = " + std::to_string(d) + ", n = " + detail::label_number(n)) +
-        "\n  set autoscale\n" + plot + "\n";
+    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
+                       "\n  set autoscale\n" + plot + "\n";
     ++p;
   }
   return detail::render(script, options);

@@ -26,8 +26,9 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
     const auto& p = data.points[k];
     const std::string field = "SimulationWorkPrecisionData.points[" + std::to_string(k) + "]";
     if (!(p.cpu_seconds_per_run > 0.0) || !(p.relative_sd_per_run > 0.0) || p.seeds < 1)
-      throw std::invalid_argument(field + ": cpu_seconds_per_run, relative_sd_per_run and seeds "
-                                          "must be positive (log axes)");
+      throw std::invalid_argument(field +
+                                  ": cpu_seconds_per_run, relative_sd_per_run and seeds "
+                                  "must be positive (log axes)");
     detail::Rows line, measured;
     for (int j = 0; j <= 40; ++j) {  // from 2 runs to 10^4 times that
       const double t = 2.0 * p.cpu_seconds_per_run * std::pow(10.0, 0.1 * j);
@@ -40,7 +41,8 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
     script.data.emplace_back(name + "m", measured);
     add("$" + name + " using 1:2 with lines linewidth 2 linecolor rgb " + detail::colour(k) +
         " title " + detail::quote("N = " + detail::label_number(static_cast<double>(p.particles))));
-    add("$" + name + "m using 1:2 with points pointtype 7 pointsize 1.5*point_scale linecolor rgb " +
+    add("$" + name +
+        "m using 1:2 with points pointtype 7 pointsize 1.5*point_scale linecolor rgb " +
         detail::colour(k) + " notitle");
   }
   const char* dashes[] = {"(6,4)", "(2,3)", "(10,3,2,3)"};

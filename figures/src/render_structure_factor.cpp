@@ -10,12 +10,6 @@
 namespace molchaos::figures {
 namespace {
 
-std::string block_name(const std::string& prefix, std::size_t index) {
-  std::string name = prefix;
-  name += std::to_string(index);
-  return name;
-}
-
 void linear_theory_panel(detail::FigureScript& script,
                          const std::vector<validation::StructureFactorCurve>& curves) {
   std::string& c = script.commands;
@@ -33,7 +27,7 @@ void linear_theory_panel(detail::FigureScript& script,
     detail::Rows rows;
     for (std::size_t j = 0; j < k.tau.size(); ++j)
       rows.push_back({k.tau[j], k.measured[j], k.error[j], k.predicted[j]});
-    const std::string block = block_name("sperp", i);
+    const std::string block = detail::block_name("sperp", i);
     script.data.emplace_back(block, rows);
     const std::string label = "L = " + detail::label_number(std::round(k.box)) + "σ, kσ = " +
                               detail::label_number(std::round(k.wavenumber * 1e4) / 1e4);
@@ -65,7 +59,7 @@ void gases_panel(detail::FigureScript& script, const validation::GasFieldStudy& 
       const auto& m = density ? p.density : p.transverse;
       rows.push_back({p.log_time, m.value, m.error, p.transverse_predicted});
     }
-    const std::string block = block_name(density ? "dens" : "gas", i);
+    const std::string block = detail::block_name(density ? "dens" : "gas", i);
     script.data.emplace_back(block, rows);
     const std::string label = g.mode == "none"    ? "original gas"
                               : g.mode == "paper" ? "paper's shuffle"

@@ -195,9 +195,31 @@ val::SimulationWorkPrecisionData synthetic_simulation_cost() {
   val::SimulationWorkPrecisionData data;
   data.title = "flux gas";
   for (int k = 0; k < 3; ++k)
-    data.points.push_back({1000 * (k + 1), 40, 0.1 * (k + 1), 0.011 / std::sqrt(k + 1.0), 1e-4,
-                           2e-4});
+    data.points.push_back(
+        {1000 * (k + 1), 40, 0.1 * (k + 1), 0.011 / std::sqrt(k + 1.0), 1e-4, 2e-4});
   return data;
+}
+
+std::vector<val::ImpactParameterRow> synthetic_impact_parameter() {
+  // Two panels, two restitutions, both gases: the original gas short of grazing collisions.
+  std::vector<val::ImpactParameterRow> rows;
+  for (const auto& [d, n] : {std::pair{2, 0.1}, std::pair{3, 0.1}})
+    for (double eps : {0.8, 0.9})
+      for (const std::string mode : {"none", "flux"})
+        for (int b = 0; b < 10; ++b) {
+          val::ImpactParameterRow r;
+          r.dimension = d;
+          r.density = n;
+          r.restitution = eps;
+          r.mode = mode;
+          r.runs = 8;
+          r.s_lo = 0.1 * b;
+          r.s_hi = 0.1 * (b + 1);
+          const double tilt = mode == "none" ? 0.02 * (1.0 - eps) * (4.5 - b) : 0.0;
+          r.fraction = {0.1 * (1.0 + tilt), 4e-4};
+          rows.push_back(r);
+        }
+  return rows;
 }
 
 template <class Function>
@@ -245,6 +267,13 @@ BOOST_AUTO_TEST_CASE(simulation_cost_renders_png_pdf_and_script) {
   const OutputDirectory out("simulation_cost");
   check_rendered(fig::render_simulation_cost(synthetic_simulation_cost(), out.options()), out.path,
                  "work_precision_simulation");
+}
+
+BOOST_AUTO_TEST_CASE(impact_parameter_renders_png_pdf_and_script) {
+  const OutputDirectory out("impact_parameter");
+  check_rendered(fig::render_impact_parameter(synthetic_impact_parameter(), out.options()),
+                 out.path, "fig_impact_parameter");
+  check_invalid_argument([&] { fig::render_impact_parameter({}, out.options()); }, "rows");
 }
 
 BOOST_AUTO_TEST_CASE(png_only_writes_no_pdf) {

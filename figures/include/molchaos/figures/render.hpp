@@ -79,6 +79,12 @@ RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrel
 RenderedFigure render_contact_moments(const std::vector<validation::ContactMomentRow>& rows,
                                       const RenderOptions& options);
 
+/// The impact-parameter histogram's departure from flat, fraction·bins − 1, against s: original
+/// and flux-shuffled gas, one curve per ε, one panel per (d, n). Writes
+/// fig_impact_parameter.{png,pdf,gp}.
+RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParameterRow>& rows,
+                                       const RenderOptions& options);
+
 /// ln(A_orig/A_chaos) and its two factors (collision frequency, energy loss per collision)
 /// against ε, one panel per (d, n). Writes fig_cooling_decomposition.{png,pdf,gp}.
 RenderedFigure render_cooling_decomposition(
