@@ -66,7 +66,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
           figures::render_pair_correlations(results.correlations.pair_correlations, 2, 0.1, 0.8,
                                             ro),
           figures::render_contact_moments(results.correlations.contact_moments, ro),
-          figures::render_cooling_decomposition(results.correlations.decomposition, ro)})
+          figures::render_cooling_decomposition(results.correlations.decomposition, ro),
+          figures::render_impact_parameter(results.correlations.impact_parameter, ro)})
       for (const auto& file : f.files)
         if (file.ends_with(".png"))
           figure_files.push_back(std::filesystem::path(file).filename().string());
