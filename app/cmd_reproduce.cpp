@@ -85,6 +85,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
                                     validation::fig4_csv(results));
   validation::write_correlation_tables(results.correlations, o.out);
   validation::write_breakdown_tables(results, o.out);
+  validation::write_estimator_table(results, o.out);
   const std::string markdown = validation::report_markdown(results, figure_files, command);
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);

@@ -12,6 +12,7 @@
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/haff_fit.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/sweep.hpp"
 
@@ -64,6 +65,40 @@ BOOST_AUTO_TEST_CASE(haff_fit_refuses_too_few_points_and_heating) {
   auto heating = samples;
   for (auto& s : heating) s.temperature = 1.0 + s.t;
   BOOST_TEST(!fit_haff(heating, 1.0, 100.0).ok);
+}
+
+// Every τ0 estimator is exact on a Haff series, at any T0 (τ0 referred to T0 = 1 is √T0·τ0),
+// also when the series stays flat between two samples (a stretch without collisions).
+BOOST_AUTO_TEST_CASE(haff_estimators_exact_on_haff_series) {
+  auto samples = haff_samples(0.97, 123.4, 1000.0, 60);
+  for (HaffEstimator e : k_haff_estimators) {
+    const Tau0Estimate r = estimate_tau0(e, samples, 1.0, 1000.0);
+    BOOST_TEST_REQUIRE(r.ok, to_string(e));
+    BOOST_TEST(std::abs(r.tau0_unit / (123.4 * std::sqrt(0.97)) - 1.0) <= 1e-9, to_string(e));
+  }
+  // The integrated form weighs each stretch by its √T dt: a flat stretch of the series (T held
+  // at its value) raises the integral by exactly √T·Δt.
+  const std::size_t k = 40;
+  samples.insert(samples.begin() + k + 1, samples[k]);
+  const double dt = 0.5 * (samples[k + 2].t - samples[k].t);
+  for (std::size_t i = k + 1; i < samples.size(); ++i) samples[i].t += dt;
+  const Tau0Estimate flat =
+      estimate_tau0(HaffEstimator::integrated, samples, 1.0, samples.back().t);
+  BOOST_TEST_REQUIRE(flat.ok);
+  const double log_ratio = 0.5 * std::log(samples.front().temperature / samples.back().temperature);
+  const double expected =
+      123.4 * std::sqrt(0.97) + std::sqrt(samples[k].temperature) * dt / log_ratio;
+  BOOST_TEST(std::abs(flat.tau0_unit / expected - 1.0) <= 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(haff_estimators_refuse_heating_and_short_windows) {
+  const auto samples = haff_samples(1.0, 10.0, 100.0, 60);
+  auto heating = samples;
+  for (auto& s : heating) s.temperature = 1.0 + s.t;
+  for (HaffEstimator e : k_haff_estimators) {
+    BOOST_TEST(!estimate_tau0(e, samples, 50.0, 51.0).ok, to_string(e));
+    BOOST_TEST(!estimate_tau0(e, heating, 1.0, 100.0).ok, to_string(e));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(window_rule) {

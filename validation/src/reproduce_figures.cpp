@@ -61,7 +61,8 @@ void figure_fig4(ReproduceResults& R) {
 
 namespace {
 
-// b from the cooling rates of the original and the flux gas, paired by seed: with the paper's
+// b from the cooling rates of the original and the flux gas (independent means: the two gases'
+// A are uncorrelated over seeds, see the estimator table): with the paper's
 // linear coefficient 63/40 and its ω0 (3D prefactor), and with the suite's full coefficients.
 // R(a2, b) = R0(a2) + b·cb(a2) and A ∝ 1/R give b = R0 (A_rand/A − 1)/cb.
 void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& paper_way,
@@ -72,8 +73,9 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
   const double g2 = theory::contact_value_g2_at_density(k_dimension, n);
   const double omega0_paper =
       theory::k_paper_omega0_prefactor * g2 * n * std::sqrt(std::numbers::pi);
-  const Measurement diff =
-      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
+  const Measurement& Ao = orig.summary.A;
+  const Measurement& Ar = rand.summary.A;
+  const Measurement diff{Ao.value - Ar.value, std::hypot(Ao.error, Ar.error)};
   paper_way.restitution.push_back(e);
   const double coefficient_b = -theory::k_paper_coefficient_b;
   paper_way.b.push_back(
@@ -81,8 +83,8 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
   const double a2 = theory::a2_first_sonine(k_dimension, e);
   const double R0 = mu2_ratio_at_b0(R.coefficients, a2);
   const double cb = mu2_ratio_b_slope(R.coefficients, a2);
-  const Measurement ratio =
-      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return r / o; });
+  const double r = Ar.value / Ao.value;
+  const Measurement ratio{r, r * std::hypot(Ar.error / Ar.value, Ao.error / Ao.value)};
   suite_way.restitution.push_back(e);
   suite_way.b.push_back({R0 * (ratio.value - 1.0) / cb, R0 * ratio.error / std::abs(cb)});
 }

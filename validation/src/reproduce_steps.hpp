@@ -64,6 +64,11 @@ Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);
 
+// --- the precision of the Fig. 4 ensembles (reproduce_precision.cpp) ---------------------------
+/// Largest SE(A)/A over the Fig. 4 points with at least two runs.
+double largest_relative_error_of_A(const ReproduceResults& results);
+Claim finding_estimator_precision(const ReproduceResults& results);
+
 // --- studies with runs of their own (reproduce_studies.cpp) -----------------------------------
 /// Runs the correlation study (and, at paper scale, the break-down study) into `results`.
 void run_studies(ReproduceResults& results, const SweepOptions& sweep);
