@@ -10,12 +10,8 @@ mpiexec=$1 np=$2 work=$3 molchaos=$4
 shift 4
 mpi_flags=("$@")
 sweep=(sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 4 --quiet)
-fail() { echo "FAIL: $*"; exit 1; }
-cleanup() { mountpoint -q "$work/small" 2>/dev/null && umount "$work/small"; }
-trap cleanup EXIT
-
-rm -rf "$work" && mkdir -p "$work" || fail "cannot create $work"
-cd "$work" || exit 1
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder "$work"
 
 # expect_cache_failure NAME PATTERN ARGS...: runs ARGS under mpirun and checks the outcome.
 expect_cache_failure() {
@@ -47,8 +43,7 @@ expect_cache_failure blocked \
 echo "ok: entries that cannot be renamed into place stop the sweep"
 
 # 2. A full cache disk.
-mkdir small
-if mount -t tmpfs -o size=8k tmpfs small 2>/dev/null; then
+if mount_small_tmpfs small 8k; then
   expect_cache_failure full_sweep \
     "cannot store a run in the cache small: .*No space left on device" \
     "${sweep[@]}" --cache small --out full.csv
