@@ -2,8 +2,9 @@
 # Usage: io_failures.sh MOLCHAOS
 # The I/O layer loses nothing and says so: a corrupted cache entry is reported and recomputed,
 # unwritable or special outputs are refused (exit 2, naming the flag) before any work, snapshot
-# paths stay next to --out, and a full disk (a small tmpfs, where mounting is allowed) gives exit 1
-# with no file or temporary left behind.
+# paths stay next to --out, a cache that cannot take a run stops the sweep naming the folder, and
+# a full disk (a small tmpfs, where mounting is allowed) gives exit 1 with no file or temporary
+# left behind.
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
@@ -22,6 +23,21 @@ sed -i '1s/.*/# cache_key = 0000000000000000/' "$entry"
 "$bin" "${args[@]}" > third.txt 2> third.err || fail "sweep after key edit"
 grep -q "stored under key" third.err || fail "wrong key not reported"
 echo "ok: corrupted cache entries are reported and recomputed"
+
+# 7. A cache entry that cannot be put in place (its name taken by a directory; needs no mount):
+# the sweep stops, exit 1, naming the cache folder and the OS error; no run counted as failed.
+mkdir blocked
+for entry in cache/*.csv; do mkdir "blocked/$(basename "$entry")"; done
+"$bin" sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 2 --quiet --threads 1 \
+  --cache blocked --out blocked.csv > /dev/null 2> err.txt
+s=$?
+[ "$s" -eq 1 ] || fail "blocked cache entries gave status $s: $(tail -n 1 err.txt)"
+grep -Eq "^molchaos: failed: cannot store a run in the cache blocked: cannot write blocked/[0-9a-f]{16}\.csv: rename failed \(Is a directory\)$" err.txt ||
+  fail "blocked cache entries not named: $(tail -n 1 err.txt)"
+! grep -q "run(s) failed" err.txt || fail "blocked cache entries counted as failed runs"
+[ ! -e blocked.csv ] || fail "a summary was written although the cache failed"
+rm -rf blocked
+echo "ok: a cache entry that cannot be put in place stops the sweep"
 
 # 6. The cleaner removes only its own temporaries: not a user's file with ".tmp." in its name, not
 # another writer's in-progress file.
