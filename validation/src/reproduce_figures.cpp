@@ -1,9 +1,12 @@
 // The figure steps of the reproduction: the data behind Fig. 4, b(ε), Fig. 3 and the snapshot,
 // each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/contact_value.hpp"
@@ -173,6 +176,34 @@ TemperatureCurve deviation_curve(const TemperatureCurve& gas, double tau0, bool 
   return d;
 }
 
+// Fig. 3 needs a curve of every gas. A gas without one (every run failed, or no sample at t ≥ 1)
+// stops the reproduction with the cause, instead of an empty curve the renderer cannot place.
+void require_every_curve(const ReproduceResults& R, const std::vector<TemperatureCurve>& gases) {
+  // A failed outcome holds no parameters: its mode is that of the run at its place in the spec.
+  const auto runs = expand(R.fig3_spec);
+  std::vector<std::string> missing, errors;
+  for (std::size_t k = 0; k < gases.size(); ++k) {
+    if (!gases[k].t.empty()) continue;
+    missing.push_back(std::string(sim::to_string(k_modes[k])));
+    for (std::size_t j = 0; j < R.fig3_runs.size() && j < runs.size(); ++j)
+      if (!R.fig3_runs[j].ok && runs[j].randomize == k_modes[k])
+        errors.push_back(R.fig3_runs[j].error);
+  }
+  if (missing.empty()) return;
+  if (errors.empty())
+    throw std::runtime_error(fmt::format(
+        "Fig. 3 cannot be drawn: the runs of randomize = {} have no sample at t >= 1 (t_end = {})",
+        fmt::join(missing, ", "), R.config.fig3_t_end));
+  // Every failure is on stderr already; the first few name the cause in the one-line message.
+  constexpr std::size_t k_listed = 3;
+  const std::size_t listed = std::min(errors.size(), k_listed);
+  throw std::runtime_error(fmt::format(
+      "Fig. 3 cannot be drawn: no run of randomize = {} succeeded ({} failed): {}{}",
+      fmt::join(missing, ", "), errors.size(),
+      fmt::join(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(listed), "; "),
+      errors.size() > listed ? fmt::format("; and {} more", errors.size() - listed) : ""));
+}
+
 }  // namespace
 
 void figure_fig3(ReproduceResults& R) {
@@ -188,6 +219,7 @@ void figure_fig3(ReproduceResults& R) {
       if (o.ok && o.result.parameters.randomize == mode) group.push_back(&o.result);
     gases.push_back(mean_curve(group, mode_label(std::string(sim::to_string(mode)))));
   }
+  require_every_curve(R, gases);
   const std::vector<double> times = gases.front().t;
   R.fig3.curves = gases;
   R.fig3.curves.push_back(haff_curve(
