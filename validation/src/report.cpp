@@ -12,6 +12,7 @@
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/validation/verdict.hpp"
+#include "reproduce_steps.hpp"
 
 namespace molchaos::validation {
 
@@ -100,12 +101,15 @@ std::string setup_section(const ReproduceResults& r, const std::string& command)
        "its quadrature error estimate.\n\n";
   s += fmt::format(
       "d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density; a point whose A "
-      "had a relative standard error above {:.2f} % got more seeds, see the runs column), runs "
-      "of {} kinetic-theory τ0. Modes: `none` (original gas), `paper` (the paper's shuffle), "
-      "`flux` (flux-weighted shuffle).\n\n",
+      "(the same {} relaxed initial states for every ε and mode at one density; a point and mode "
+      "whose A had a relative standard error above {:.2f} % got more seeds, in stages, see the "
+      "runs column: the largest left is {:.3f} %), runs of {} kinetic-theory τ0; A from the "
+      "integrated form of Haff's law over each run's window (the estimator finding below). "
+      "Modes: `none` (original gas), `paper` (the paper's shuffle), `flux` (flux-weighted "
+      "shuffle).\n\n",
       c.particles, fmt::join(c.densities, ", "), c.restitutions.front(), c.restitutions.back(),
-      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error, c.t_end_in_tau0);
+      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error,
+      100.0 * steps::largest_relative_error_of_A(r), c.t_end_in_tau0);
   if (r.failed_runs > 0) {
     s += fmt::format("**{} run(s) failed**:\n\n", r.failed_runs);
     for (const auto& f : r.failures) s += "- " + f + "\n";

@@ -64,8 +64,9 @@ void figure_fig4(ReproduceResults& R) {
 
 namespace {
 
-// b from the cooling rates of the original and the flux gas (independent means: the two gases'
-// A are uncorrelated over seeds, see the estimator table): with the paper's
+// b from the cooling rates of the original and the flux gas, as independent means (the gases get
+// their seeds apart; their weak positive correlation over common seeds makes these errors slightly
+// conservative): with the paper's
 // linear coefficient 63/40 and its ω0 (3D prefactor), and with the suite's full coefficients.
 // R(a2, b) = R0(a2) + b·cb(a2) and A ∝ 1/R give b = R0 (A_rand/A − 1)/cb.
 void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& paper_way,
