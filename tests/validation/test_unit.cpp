@@ -12,6 +12,7 @@
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/haff_fit.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/sweep.hpp"
@@ -89,6 +90,34 @@ BOOST_AUTO_TEST_CASE(haff_estimators_exact_on_haff_series) {
   const double expected =
       123.4 * std::sqrt(0.97) + std::sqrt(samples[k].temperature) * dt / log_ratio;
   BOOST_TEST(std::abs(flat.tau0_unit / expected - 1.0) <= 1e-9);
+}
+
+// The estimator comparison on synthetic runs: an estimator that reads every run 1 % high has
+// shift +1 % with no error and the same cost; one with twice the spread costs four times as
+// many runs. Correlation over seeds: +1 for the same values, −1 for mirrored ones, and only
+// seeds both gases have count.
+BOOST_AUTO_TEST_CASE(estimator_comparison_and_seed_correlation) {
+  PointSummary p, q, mirrored;
+  const double values[] = {20.0, 21.0, 19.5, 20.5, 22.0};
+  for (std::size_t k = 0; k < std::size(values); ++k) {
+    const double v = values[k], spread = v - 20.6;
+    p.A_by_estimator.push_back({v, v * 1.01, 20.6 + 2.0 * spread, v});
+    p.A_by_seed.emplace_back(k, v);
+    q.A_by_seed.emplace_back(k, 3.0 * v + 1.0);
+    mirrored.A_by_seed.emplace_back(k, -v);
+  }
+  q.A_by_seed.emplace_back(99, 1e6);  // a seed p lacks: ignored
+  const auto rows = compare_estimator_scatter({&p});
+  BOOST_TEST_REQUIRE(rows.size() == k_haff_estimators.size());
+  BOOST_TEST(rows[1].shift_from_least_squares.value == 0.01, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[1].shift_from_least_squares.error <= 1e-15);
+  BOOST_TEST(rows[1].cost_ratio == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[2].cost_ratio == 4.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[0].degrees_of_freedom == 4);
+  BOOST_TEST(seed_correlation({&p}, {&q}).value == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(seed_correlation({&p}, {&mirrored}).value == -1.0,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(seed_correlation({&p}, {&q}).error == 0.5, boost::test_tools::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(haff_estimators_refuse_heating_and_short_windows) {
