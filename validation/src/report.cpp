@@ -37,7 +37,18 @@ std::string header_lines(const ReproduceResults& r) {
       "{}\n",
       c.window.start_collisions_per_particle, c.window.density_mode_threshold,
       c.window.velocity_mode_threshold);
+  s += fmt::format("# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none)\n",
+                   r.dsmc_spec.seeds);
   return s;
+}
+
+// Every point of Fig. 4 with the name of its gas: the MD modes, then DSMC ("dsmc", molecular
+// chaos by construction).
+std::vector<std::pair<const PointResult*, std::string>> fig4_rows(const ReproduceResults& r) {
+  std::vector<std::pair<const PointResult*, std::string>> rows;
+  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
+  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
+  return rows;
 }
 
 std::string fmt_measurement(const std::optional<Measurement>& m) {
@@ -52,12 +63,13 @@ std::string fig4_csv(const ReproduceResults& r) {
   std::string s = header_lines(r);
   s += "density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err,a2,a2_err,mean_dyad,mean_"
        "dyad_err,breakdowns\n";
-  for (const auto& p : r.fig4_points) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
+    const PointResult& p = *point;
     const auto& m = p.summary;
     s += fmt::format("{},{},{},{:.10g},{:.4g},{},{:.10g},{:.3g},{:.6g},{:.3g},{:.8g},{:.3g},{}\n",
-                     m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs,
-                     p.A_theory.value, p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value,
-                     m.mean_dyad.error, m.breakdowns);
+                     m.density, m.restitution, mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
+                     p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value, m.mean_dyad.error,
+                     m.breakdowns);
   }
   return s;
 }
@@ -136,11 +148,7 @@ std::string fig4_tables(const ReproduceResults& r) {
       "a2 (theory) is the first-Sonine a2(ε) (van Noije & Ernst), which that A uses.\n\n| n | ε "
       "| mode | A (sim) | runs | A (theory, b = 0) | diff [SE] | a2 (sim) | a2 (theory) "
       "|\n|---|---|---|---|---|---|---|---|---|\n";
-  // The MD modes, then DSMC (mode "dsmc", molecular chaos by construction).
-  std::vector<std::pair<const PointResult*, std::string>> rows;
-  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
-  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
-  for (const auto& [point, mode] : rows) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
     const PointResult& p = *point;
     const auto& m = p.summary;
     const double se = std::hypot(m.A.error, p.A_theory.error);

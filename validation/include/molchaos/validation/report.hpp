@@ -13,7 +13,9 @@ namespace molchaos::validation {
 /// Writes `text` to path through sim::write_file_atomically, creating the parent folder first.
 void write_file_atomically(const std::string& path, const std::string& text);
 
-/// Fig. 4's data: columns density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err.
+/// Fig. 4's data, every point: columns density,restitution,randomize,A,A_err,runs,A_theory,
+/// A_theory_err,a2,a2_err,mean_dyad,mean_dyad_err,breakdowns; `randomize` is the MD gas's mode
+/// (none, paper, flux) or `dsmc` for the DSMC gas.
 std::string fig4_csv(const ReproduceResults& results);
 
 /// One sentence on what the figure in `file` (e.g. "fig3_temperature.png") shows and what to look
