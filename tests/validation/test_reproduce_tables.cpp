@@ -1,5 +1,6 @@
 // The tables `molchaos reproduce` writes for other tools, from small synthetic results: every
-// point of Fig. 4 (the MD gases and DSMC) in fig4_A_of_eps.csv.
+// point of Fig. 4 (the MD gases and DSMC) in fig4_A_of_eps.csv; every gas's a2 and the Sonine
+// theory's in a2_of_eps.csv.
 #define BOOST_TEST_MODULE validation_reproduce_tables
 #include <boost/test/unit_test.hpp>
 #include <sstream>
@@ -66,4 +67,24 @@ BOOST_AUTO_TEST_CASE(fig4_csv_holds_every_point_dsmc_included) {
     }
   BOOST_TEST(dsmc == 2);
   BOOST_TEST(csv.find("# dsmc_seeds = 16") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(a2_csv_holds_every_gas_and_both_theory_levels) {
+  ReproduceResults r = synthetic_results();
+  A2Panel panel;
+  panel.density = 0.05;
+  panel.series.push_back({"original", "none", {0.8, 0.9}, {{0.01, 0.002}, {0.02, 0.002}}});
+  panel.series.push_back({"DSMC", "dsmc", {0.8, 0.9}, {{0.03, 0.001}, {0.04, 0.001}}});
+  panel.theory_restitution = {0.8, 0.805, 0.81};
+  panel.first_sonine = {{-0.02, 0.0}, {-0.021, 0.0}, {-0.022, 0.0}};
+  panel.improved = {{-0.025, 1e-13}, {-0.026, 1e-13}, {-0.027, 1e-13}};
+  r.a2.panels = {panel};
+  const std::string csv = a2_csv(r);
+  const auto lines = data_lines(csv);
+  BOOST_TEST_REQUIRE(lines.size() == 1u + 4u + 6u);
+  BOOST_TEST(lines[0] == "dimension,density,restitution,source,a2,a2_err");
+  BOOST_TEST(lines[3] == "2,0.05,0.8,dsmc,0.03,0.001");
+  BOOST_TEST(lines[5] == "2,0.05,0.800,first_sonine,-0.02,0");
+  BOOST_TEST(lines[10] == "2,0.05,0.810,a2_a3,-0.027,1e-13");
+  BOOST_TEST(csv.starts_with("# molchaos reproduce"));
 }
