@@ -294,6 +294,23 @@ void add_plot_element(std::string& plot, const std::string& element) {
   plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
 }
 
+std::string gas_point_type(const std::string& mode, std::size_t index) {
+  if (mode == "none") return "9";   // filled triangle
+  if (mode == "paper") return "5";  // filled square
+  if (mode == "flux") return "4";   // open square
+  if (mode == "dsmc") return "6";   // open circle
+  constexpr std::array<const char*, 4> k_others{"7", "11", "13", "6"};
+  return k_others[index % k_others.size()];
+}
+
+std::size_t gas_colour_index(const std::string& mode, std::size_t index) {
+  if (mode == "none") return 1;
+  if (mode == "paper") return 2;
+  if (mode == "flux") return 3;
+  if (mode == "dsmc") return 4;
+  return 4 + index;
+}
+
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position) {
   script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);

@@ -55,6 +55,12 @@ void begin_log_log(FigureScript& script, const std::string& title, const std::st
 /// Appends one element to a plot command being built ("  plot a, \\\n       b").
 void add_plot_element(std::string& plot, const std::string& element);
 
+/// The symbol (gnuplot point type) and colour index of a gas, the same in every figure: the
+/// paper's filled triangle for the original gas (`none`), squares for the shuffled ones (`paper`
+/// filled, `flux` open), an open circle for `dsmc`; `index` picks for any other.
+std::string gas_point_type(const std::string& mode, std::size_t index);
+std::size_t gas_colour_index(const std::string& mode, std::size_t index);
+
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position);

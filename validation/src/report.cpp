@@ -1,5 +1,6 @@
-// REPORT.md and the Fig. 4 CSV. The report leads with its findings (one line per claim), then
-// the figures with their captions, then every comparison row and the tables behind the figures.
+// REPORT.md and the CSVs of Fig. 4 and of a2(ε). The report leads with its findings (one line per
+// claim), then the figures with their captions, then every comparison row and the tables behind the
+// figures.
 #include "molchaos/validation/report.hpp"
 
 #include <fmt/format.h>
@@ -38,7 +39,18 @@ std::string header_lines(const ReproduceResults& r) {
       "{}\n",
       c.window.start_collisions_per_particle, c.window.density_mode_threshold,
       c.window.velocity_mode_threshold);
+  s += fmt::format("# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none)\n",
+                   r.dsmc_spec.seeds);
   return s;
+}
+
+// Every point of Fig. 4 with the name of its gas: the MD modes, then DSMC ("dsmc", molecular
+// chaos by construction).
+std::vector<std::pair<const PointResult*, std::string>> fig4_rows(const ReproduceResults& r) {
+  std::vector<std::pair<const PointResult*, std::string>> rows;
+  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
+  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
+  return rows;
 }
 
 std::string fmt_measurement(const std::optional<Measurement>& m) {
@@ -53,12 +65,36 @@ std::string fig4_csv(const ReproduceResults& r) {
   std::string s = header_lines(r);
   s += "density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err,a2,a2_err,mean_dyad,mean_"
        "dyad_err,breakdowns\n";
-  for (const auto& p : r.fig4_points) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
+    const PointResult& p = *point;
     const auto& m = p.summary;
     s += fmt::format("{},{},{},{:.10g},{:.4g},{},{:.10g},{:.3g},{:.6g},{:.3g},{:.8g},{:.3g},{}\n",
-                     m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs,
-                     p.A_theory.value, p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value,
-                     m.mean_dyad.error, m.breakdowns);
+                     m.density, m.restitution, mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
+                     p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value, m.mean_dyad.error,
+                     m.breakdowns);
+  }
+  return s;
+}
+
+std::string a2_csv(const ReproduceResults& r) {
+  std::string s = header_lines(r);
+  s += "# a2 of a gas (source none, paper, flux: MD; dsmc): mean ± standard error over runs of "
+       "each run's a2 averaged over its Haff-fit window; first_sonine (eq. a2linD) and a2_a3 "
+       "(with a2^2 and a3): the Sonine theory, a2_err its quadrature error\n";
+  s += "dimension,density,restitution,source,a2,a2_err\n";
+  const int d = r.a2.dimension;
+  for (const auto& panel : r.a2.panels) {
+    for (const auto& series : panel.series)
+      for (std::size_t i = 0; i < series.a2.size(); ++i)
+        s += fmt::format("{},{},{},{},{:.6g},{:.3g}\n", d, panel.density, series.restitution[i],
+                         series.mode, series.a2[i].value, series.a2[i].error);
+    for (std::size_t i = 0; i < panel.theory_restitution.size(); ++i) {
+      const double e = panel.theory_restitution[i];
+      s += fmt::format("{},{},{:.3f},first_sonine,{:.10g},{:.3g}\n", d, panel.density, e,
+                       panel.first_sonine[i].value, panel.first_sonine[i].error);
+      s += fmt::format("{},{},{:.3f},a2_a3,{:.10g},{:.3g}\n", d, panel.density, e,
+                       panel.improved[i].value, panel.improved[i].error);
+    }
   }
   return s;
 }
@@ -140,11 +176,7 @@ std::string fig4_tables(const ReproduceResults& r) {
       "a2 (theory) is the first-Sonine a2(ε) (van Noije & Ernst), which that A uses.\n\n| n | ε "
       "| mode | A (sim) | runs | A (theory, b = 0) | diff [SE] | a2 (sim) | a2 (theory) "
       "|\n|---|---|---|---|---|---|---|---|---|\n";
-  // The MD modes, then DSMC (mode "dsmc", molecular chaos by construction).
-  std::vector<std::pair<const PointResult*, std::string>> rows;
-  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
-  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
-  for (const auto& [point, mode] : rows) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
     const PointResult& p = *point;
     const auto& m = p.summary;
     const double se = std::hypot(m.A.error, p.A_theory.error);
@@ -229,6 +261,13 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
            "with the suite's), and directly from the velocities at contact; the flux gas's "
            "contact b is the control and should be zero. Look whether the cooling-rate and "
            "contact values agree.";
+  if (file.starts_with("fig_a2_of_eps"))
+    return "a2(ε), the second Sonine coefficient, one panel per density: the original, the "
+           "paper-shuffled, the flux-shuffled and the DSMC gas (mean ± standard error over runs "
+           "of the a2 averaged over the Haff-fit window), the first-Sonine a2 the paper quotes "
+           "(eq. a2linD, dashed) and the improved a2 with a2² and a3 (solid). Look at which line "
+           "the DSMC circles follow where the two lines part (small ε), and whether the MD gases' "
+           "a2 lies on the DSMC gas's.";
   if (file.starts_with("fig_snapshot"))
     return fmt::format(
         "Snapshot of the original gas at the end of Fig. 3's runs (after the clustering onset), "

@@ -77,8 +77,8 @@ using FigureStep = void (*)(ReproduceResults&);
 using ClaimStep = Claim (*)(const ReproduceResults&);
 
 // Figures first: several claims read their data (fits, b(ε), the onset).
-constexpr FigureStep k_figures[] = {steps::figure_fig4, steps::figure_b, steps::figure_fig3,
-                                    steps::figure_snapshot};
+constexpr FigureStep k_figures[] = {steps::figure_fig4, steps::figure_b, steps::figure_a2,
+                                    steps::figure_fig3, steps::figure_snapshot};
 
 // The report's summary lists the claims in this order.
 constexpr ClaimStep k_claims[] = {

@@ -1,5 +1,5 @@
-// The figure steps of the reproduction: the data behind Fig. 4, b(ε), Fig. 3 and the snapshot,
-// each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
+// The figure steps of the reproduction: the data behind Fig. 4, b(ε), a2(ε), Fig. 3 and the
+// snapshot, each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -13,6 +13,7 @@
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/paper_constants.hpp"
 #include "molchaos/theory/sonine.hpp"
+#include "molchaos/theory/sonine_hcs.hpp"
 #include "reproduce_steps.hpp"
 
 namespace molchaos::validation::steps {
@@ -20,9 +21,22 @@ namespace {
 
 constexpr int k_dimension = 2;
 
-// One gas of Fig. 4's panel at density n: its A(ε) points and their straight-line fit.
+// The point of one gas at (n, ε): `mode` is a randomization's name, or "dsmc" for the DSMC
+// ensemble.
+const PointResult& gas_point(const ReproduceResults& R, double n, double e,
+                             const std::string& mode) {
+  return mode == "dsmc" ? find_dsmc_point(R, n, e) : find_point(R, n, e, mode);
+}
+
+// Every gas of Figs. 4 and a2(ε): the MD modes, then DSMC.
+std::vector<std::string> gas_modes() {
+  std::vector<std::string> modes;
+  for (auto mode : k_modes) modes.emplace_back(sim::to_string(mode));
+  modes.emplace_back("dsmc");
+  return modes;
+}
+
 // One series of Fig. 4: A(ε) of an ensemble's points at density n, with its straight-line fit.
-// `mode` is a randomization's name, or "dsmc" for the DSMC ensemble.
 ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   ASeries s;
   s.mode = mode;
@@ -30,7 +44,7 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   std::vector<double> x;
   std::vector<Measurement> y;
   for (double e : R.config.restitutions) {
-    const auto& p = mode == "dsmc" ? find_dsmc_point(R, n, e) : find_point(R, n, e, s.mode);
+    const auto& p = gas_point(R, n, e, mode);
     if (p.summary.runs == 0) continue;
     s.points.push_back({e, p.summary.A, p.summary.runs});
     x.push_back(e);
@@ -48,9 +62,7 @@ void figure_fig4(ReproduceResults& R) {
   for (double n : cfg.densities) {
     Fig4Panel panel;
     panel.density = n;
-    for (auto mode : k_modes)
-      panel.series.push_back(a_series(R, n, std::string(sim::to_string(mode))));
-    panel.series.push_back(a_series(R, n, "dsmc"));
+    for (const std::string& mode : gas_modes()) panel.series.push_back(a_series(R, n, mode));
     // Kinetic theory, b = 0: A = 1/(ω0 μ2/μ2(0,0)) with the first-Sonine a2(ε).
     for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
       panel.theory_restitution.push_back(e);
@@ -59,6 +71,43 @@ void figure_fig4(ReproduceResults& R) {
                                       R.coefficients.ratio(a2, 0.0)));
     }
     R.fig4.panels.push_back(panel);
+  }
+}
+
+namespace {
+
+// a2(ε) of one gas at density n: each point's a2 (mean ± SE over runs of the window average).
+A2Series a2_series(const ReproduceResults& R, double n, const std::string& mode) {
+  A2Series s{mode_label(mode), mode, {}, {}};
+  for (double e : R.config.restitutions) {
+    const auto& p = gas_point(R, n, e, mode);
+    if (p.summary.runs == 0) continue;
+    s.restitution.push_back(e);
+    s.a2.push_back(p.summary.a2);
+  }
+  return s;
+}
+
+}  // namespace
+
+// The gases' a2 against the first-Sonine a2 the paper quotes (eq. a2linD) and the improved a2
+// (a2² and a3, theory/sonine_hcs.hpp); the theory does not depend on the density.
+void figure_a2(ReproduceResults& R) {
+  const auto& cfg = R.config;
+  R.a2.title = fmt::format("Sonine coefficient a2(ε), d = {}, N = {}", k_dimension, cfg.particles);
+  R.a2.dimension = k_dimension;
+  A2Panel theory_grid;
+  for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
+    const theory::HcsSonine levels = theory::hcs_sonine_coefficients(k_dimension, e);
+    theory_grid.theory_restitution.push_back(e);
+    theory_grid.first_sonine.push_back(levels.first_sonine.a2);
+    theory_grid.improved.push_back(levels.a2_a3.a2);
+  }
+  for (double n : cfg.densities) {
+    A2Panel panel = theory_grid;
+    panel.density = n;
+    for (const std::string& mode : gas_modes()) panel.series.push_back(a2_series(R, n, mode));
+    R.a2.panels.push_back(std::move(panel));
   }
 }
 

@@ -40,6 +40,7 @@ double mu2_ratio_b_slope(const theory::ExpansionTable& table, double a2);
 // --- figures ------------------------------------------------------------------------------
 void figure_fig4(ReproduceResults& results);
 void figure_b(ReproduceResults& results);
+void figure_a2(ReproduceResults& results);
 void figure_fig3(ReproduceResults& results);
 void figure_snapshot(ReproduceResults& results);
 

@@ -1,6 +1,7 @@
-// Renders the paper's figures (Fig. 3, Fig. 4, b(ε), a snapshot, the quadrature's work–precision
-// diagram) from the plain data types of validation/ into PNG and PDF files with gnuplot. Next to
-// every figure goes its gnuplot script with the data inline, so the figure can be re-plotted.
+// Renders the paper's figures (Fig. 3, Fig. 4, b(ε), a2(ε), a snapshot, the quadrature's
+// work–precision diagram) from the plain data types of validation/ into PNG and PDF files with
+// gnuplot. Next to every figure goes its gnuplot script with the data inline, so the figure can be
+// re-plotted.
 #pragma once
 
 #include <string>
@@ -42,6 +43,10 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
 /// b(ε), one panel per density, one point set per way of obtaining it.
 /// Writes fig_b_of_eps.{png,pdf,gp}.
 RenderedFigure render_b(const validation::BData& data, const RenderOptions& options);
+
+/// a2(ε), one panel per density: every gas's points with error bars, the first-Sonine a2 (dashed)
+/// and the improved a2 with a2² and a3 (solid). Writes fig_a2_of_eps.{png,pdf,gp}.
+RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& options);
 
 /// Particles coloured by speed with the coarse-grained velocity field as arrows.
 /// Writes fig_snapshot.{png,pdf,gp}.

@@ -74,6 +74,7 @@ struct ReproduceResults {
   Fig3Data fig3;
   Fig4Data fig4;
   BData b;
+  A2Data a2;  ///< a2(ε) of every gas against the Sonine theory
   SnapshotData snapshot;
   double seconds = 0.0;
   int failed_runs = 0;
