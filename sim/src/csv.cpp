@@ -24,8 +24,16 @@ std::string num(double x) {
 }
 
 const char* const k_base_columns = "t,T,a2,collisions,events,velocity_mode,density_mode";
-const char* const k_contact_columns =
+const char* const k_contact_sum_columns =
     ",contacts,sum_c1e_c2e,sum_c1_dot_c2,sum_gn2,sum_abs_gn,sum_g2";
+constexpr std::size_t k_first_impact_column = 13;  // after the base and the sum columns
+
+// The contact columns: the sums, then the impact-parameter histogram impact_0 … impact_<bins−1>.
+std::string contact_columns() {
+  std::string s = k_contact_sum_columns;
+  for (int b = 0; b < ContactMoments::k_impact_bins; ++b) s += ",impact_" + std::to_string(b);
+  return s;
+}
 
 [[noreturn]] void corrupt(const std::string& what) {
   throw std::runtime_error("corrupt result file: " + what);
@@ -75,7 +83,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
       << "# collisions = " << r.collisions << "\n"
       << "# events = " << r.events << "\n"
       << "# rows = " << r.samples.size() << "\n"
-      << k_base_columns << (p.contact_statistics ? k_contact_columns : "") << "\n";
+      << k_base_columns << (p.contact_statistics ? contact_columns() : "") << "\n";
   for (const Sample& s : r.samples) {
     out << num(s.t) << ',' << num(s.temperature) << ',' << num(s.a2) << ',' << s.collisions << ','
         << s.events << ',' << num(s.velocity_mode) << ',' << num(s.density_mode);
@@ -83,6 +91,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
       const ContactMoments& c = s.contacts;
       out << ',' << c.count << ',' << num(c.sum_c1e_c2e) << ',' << num(c.sum_c1_dot_c2) << ','
           << num(c.sum_gn2) << ',' << num(c.sum_abs_gn) << ',' << num(c.sum_g2);
+      for (const auto count : c.impact_histogram) out << ',' << count;
     }
     out << '\n';
   }
@@ -134,7 +143,7 @@ RunResult read_csv(std::istream& in) {
   const std::uint64_t rows = parse_uint(field("rows"), "rows");
 
   const std::string expected =
-      std::string(k_base_columns) + (p.contact_statistics ? k_contact_columns : "");
+      std::string(k_base_columns) + (p.contact_statistics ? contact_columns() : "");
   if (columns != expected) corrupt("column line '" + columns + "'");
   const std::size_t width = split(expected, ',').size();
   while (std::getline(lines, line)) {
@@ -157,6 +166,9 @@ RunResult read_csv(std::istream& in) {
       s.contacts.sum_gn2 = parse_double(f[10], "sum_gn2");
       s.contacts.sum_abs_gn = parse_double(f[11], "sum_abs_gn");
       s.contacts.sum_g2 = parse_double(f[12], "sum_g2");
+      for (std::size_t b = 0; b < s.contacts.impact_histogram.size(); ++b)
+        s.contacts.impact_histogram[b] =
+            parse_uint(f[k_first_impact_column + b], "impact_" + std::to_string(b));
     }
     r.samples.push_back(s);
   }

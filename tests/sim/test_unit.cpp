@@ -209,6 +209,7 @@ RunResult small_result() {
     s.velocity_mode = 1.0 / 7.0;
     s.density_mode = 0.9;
     s.contacts = {5, 0.1, 0.2, 0.3, 0.4, 1e-300};
+    s.contacts.impact_histogram[static_cast<std::size_t>(k)] = 7u + k;
     r.samples.push_back(s);
   }
   return r;
@@ -227,6 +228,7 @@ BOOST_AUTO_TEST_CASE(csv_round_trip_is_exact) {
   BOOST_TEST(back.samples[2].t == r.samples[2].t);
   BOOST_TEST(back.samples[1].temperature == 0.5);
   BOOST_TEST(back.samples[2].contacts.sum_g2 == 1e-300);
+  BOOST_TEST(back.samples[2].contacts.impact_histogram == r.samples[2].contacts.impact_histogram);
   std::stringstream again;
   write_csv(back, again);
   std::stringstream first;

@@ -16,6 +16,7 @@
 #include "molchaos/validation/analysis.hpp"
 #include "molchaos/validation/contact_ansatz.hpp"
 #include "molchaos/validation/contact_measurement.hpp"
+#include "molchaos/validation/impact_parameter.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 
 using namespace molchaos;
@@ -202,4 +203,72 @@ BOOST_AUTO_TEST_CASE(closed_form_slopes_agree_with_quadrature) {
       const ContactQuantities mca = molecular_chaos_contact(a2);
       BOOST_TEST(std::abs(Ja.dyad.value / Ja.one.value - (kappa * mca.P - mca.Q)) < 10 * a2 * a2);
     }
+}
+
+BOOST_AUTO_TEST_CASE(molecular_chaos_with_sonine_terms_agrees_with_quadrature) {
+  // The closed forms in full (no linearisation in a2, a3) against the theory library's
+  // quadrature of the same integrals: ⟨D⟩ = (κ − 1)P (P = Q under molecular chaos) and the
+  // normalisation W at a2 ≠ 0; W·Y = μ2(a2, a3)/μ2(0, 0) (energy loss ∝ (g·e)², rate ∝ |g·e|).
+  theory::QuadratureOptions q;
+  q.relative_tolerance = 1e-10;
+  const double a2 = 0.2, a3 = 0.1;  // large, so that the second-order terms matter at 1e-3
+  for (int d : {2, 3}) {
+    const auto J = theory::contact_integrals(d, a2, 3.0, q);
+    const auto J0 = theory::contact_integrals(d, 0.0, 3.0, q);
+    const ContactQuantities exact = molecular_chaos_contact_sonine(a2, 0.0);
+    BOOST_TEST(J.dyad.value / J.one.value == 2.0 * exact.P, boost::test_tools::tolerance(1e-8));
+    BOOST_TEST(J.one.value / J0.one.value == exact.W, boost::test_tools::tolerance(1e-8));
+    const double mu2 =
+        theory::collision_moment(d, 2, 0.5, theory::PairShape{a2, a3, 0.0}, 3.0, q).value /
+        theory::collision_moment(d, 2, 0.5, theory::PairShape{}, 3.0, q).value;
+    const ContactQuantities full = molecular_chaos_contact_sonine(a2, a3);
+    BOOST_TEST(full.W * full.Y == mu2, boost::test_tools::tolerance(1e-8));
+    // The first-order forms are the linearisation: O(a2²) apart, and visibly so here.
+    const ContactQuantities linear = molecular_chaos_contact(a2);
+    BOOST_TEST(std::abs(exact.P - linear.P) > 1e-4);
+    BOOST_TEST(std::abs(exact.P - linear.P) < a2 * a2);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(impact_parameter_rows_and_claims) {
+  // Multinomial histograms (independent draws) of a flat and of a grazing-poor distribution: the
+  // fractions' mean ± SE over runs, the pooled flatness test and the grazing claim see the
+  // difference; the run scatter matches the multinomial variance.
+  std::mt19937_64 rng(5);
+  const int bins = sim::ContactMoments::k_impact_bins, per_run = 20000, runs = 12;
+  auto make_runs = [&](double grazing_weight) {
+    std::vector<double> w(bins, 1.0);
+    w.back() = grazing_weight;
+    std::discrete_distribution<int> draw(w.begin(), w.end());
+    std::vector<RunContacts> out(runs);
+    for (int r = 0; r < runs; ++r) {
+      out[r].ok = true;
+      out[r].impact_histogram.assign(bins, 0);
+      for (int k = 0; k < per_run; ++k) ++out[r].impact_histogram[draw(rng)];
+    }
+    return out;
+  };
+  auto rows = summarize_impact_parameter(2, 0.1, 0.8, "flux", make_runs(1.0));
+  const auto poor = summarize_impact_parameter(2, 0.1, 0.8, "none", make_runs(0.8));
+  BOOST_TEST(rows.size() == std::size_t(bins));
+  double total = 0.0, scatter = 0.0;
+  for (const auto& r : rows) {
+    total += r.fraction.value;
+    scatter += r.scatter_over_multinomial / bins;
+    BOOST_TEST(r.runs == runs);
+  }
+  BOOST_TEST(total == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows.back().s_hi == 1.0);
+  BOOST_TEST(scatter > 0.5);  // a mean of 10 variance ratios with 11 dof each: 1 ± 0.15
+  BOOST_TEST(scatter < 1.6);
+  rows.insert(rows.end(), poor.begin(), poor.end());
+  const auto claims = impact_parameter_claims(rows);
+  BOOST_TEST_REQUIRE(claims.size() == 4u);   // per gas: flatness, grazing
+  BOOST_TEST(claims[0].verdict == "fails");  // the grazing-poor gas ("none" first)
+  BOOST_TEST(claims[1].verdict == "resolved");
+  BOOST_TEST(claims[1].deciding.value < 0.0);
+  // Weight 0.8 of 9.8: fraction 0.8/9.8 in the last bin, departure 10·0.8/9.8 − 1 = −1.8/9.8.
+  BOOST_TEST(std::abs(claims[1].deciding.value + 1.8 / 9.8) < 4 * claims[1].deciding.error);
+  BOOST_TEST(claims[2].verdict == "holds");
+  BOOST_TEST(claims[3].verdict == "not resolved");
 }

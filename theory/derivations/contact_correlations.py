@@ -5,6 +5,9 @@ and f = phi(c)(1 + a2 S2(c^2)): the molecular-chaos values (b_par = b_perp = 0) 
 a2, and the derivatives with respect to the two amplitudes at a2 = 0. The paper's ansatz
 b (k (c1.e)(c2.e) - c1.c2) is b_par = (k - 1) b, b_perp = -b (k = 3 printed, k = d traceless).
 These are the closed forms of validation/src/contact_ansatz.cpp; not part of the build.
+molecular_chaos_sonine(d) gives the molecular-chaos values in full, for the product
+f(c1) f(c2) with f = phi(c)(1 + a2 S2(c^2) + a3 S3(c^2)): rational in (a2, a3), the same for
+d = 2 and 3 (validation's molecular_chaos_contact_sonine).
 
 Averages are over colliding pairs (weight Theta(-c12.e)|c12.e|), c = v/sqrt(2T), e along x,
 c1 = C + g/2, c2 = C - g/2, u = -g.e > 0. Quantities:
@@ -71,6 +74,29 @@ def contact_table(d):
     return {k: first_order(v) for k, v in rows.items()}
 
 
+def molecular_chaos_sonine(d):
+    """P, Q, W, Y under molecular chaos with f = phi (1 + a2 S2 + a3 S3), all orders."""
+    a2, a3 = sp.symbols("a2 a3")
+    u = sp.symbols("u", positive=True)
+    C = sp.symbols(f"C1:{d + 1}", real=True)
+    h = sp.symbols(f"h1:{d}", real=True)
+    g = [-u] + list(h)
+    c1 = [C[i] + g[i] / 2 for i in range(d)]
+    c2 = [C[i] - g[i] / 2 for i in range(d)]
+    sq = lambda v: sum(x * x for x in v)
+    S2 = lambda x: x**2 / 2 - sp.Rational(d + 2, 2) * x + sp.Rational(d * (d + 2), 8)
+    S3 = lambda x: (-x**3 / 6 + sp.Rational(d + 4, 4) * x**2 - sp.Rational((d + 2) * (d + 4), 8) * x
+                    + sp.Rational(d * (d + 2) * (d + 4), 48))
+    f = lambda c: 1 + a2 * S2(sq(c)) + a3 * S3(sq(c))
+    weight = f(c1) * f(c2)
+    norm = expectation(weight, C, h, u)
+    rows = {"W": sp.factor(norm)}
+    for name, X in (("P", c1[0] * c2[0]), ("Q", sum(c1[i] * c2[i] for i in range(d))),
+                    ("Y", u * u / 2)):
+        rows[name] = sp.factor(expectation(X * weight, C, h, u) / norm)
+    return rows
+
+
 if __name__ == "__main__":
     for d in (2, 3):
         print(f"d = {d}: quantity: value at a2 = b = 0, d/da2, d/db_par, d/db_perp")
@@ -82,3 +108,9 @@ if __name__ == "__main__":
             slopes = {n: sp.nsimplify((k - 1) * r[2] - r[3]) for n, r in t.items()}
             print(f"  dyad factor {k}: d/db of P, Q, W, Y =", slopes["P"], slopes["Q"],
                   slopes["W"], slopes["Y"], " d ln(W Y)/db =", slopes["W"] + slopes["Y"])
+    for d in (2, 3):
+        print(f"d = {d}: molecular chaos with a2, a3 in full, and to second order")
+        for name, v in molecular_chaos_sonine(d).items():
+            a2, a3 = sp.symbols("a2 a3")
+            series = sp.series(sp.series(v, a2, 0, 3).removeO(), a3, 0, 2).removeO()
+            print(f"  {name} = {v}\n      = {sp.expand(series)} + ...")

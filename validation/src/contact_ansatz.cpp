@@ -14,6 +14,19 @@ ContactQuantities molecular_chaos_contact(double a2) {
   return {-0.25 + a2 / 16.0, -0.25 + a2 / 16.0, 1.0 - a2 / 16.0, 1.0 + a2 / 4.0};
 }
 
+ContactQuantities molecular_chaos_contact_sonine(double a2, double a3) {
+  // theory/derivations/contact_correlations.py, molecular_chaos_sonine(d).
+  const double den =
+      16384.0 - 1024.0 * a2 - 256.0 * a3 - 240.0 * a2 * a2 - 280.0 * a2 * a3 - 105.0 * a3 * a3;
+  const double p =
+      -(16384.0 - 5120.0 * a2 - 1792.0 * a3 + 912.0 * a2 * a2 + 760.0 * a2 * a3 + 315.0 * a3 * a3) /
+      (4.0 * den);
+  const double y =
+      (16384.0 + 3072.0 * a2 + 256.0 * a3 + 144.0 * a2 * a2 + 120.0 * a2 * a3 + 35.0 * a3 * a3) /
+      den;
+  return {p, p, den / 16384.0, y};
+}
+
 ContactQuantities slopes_longitudinal(int /*dimension*/) {
   return {3.0 / 8.0, 3.0 / 8.0, -0.25, -0.5};
 }

@@ -9,6 +9,7 @@
 
 #include "molchaos/validation/correlation_analysis.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/impact_parameter.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/report.hpp"
 #include "molchaos/validation/verdict.hpp"
@@ -95,6 +96,9 @@ void add_contact_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, i
     }
   S.contact_moments.push_back(summarize_contacts(d, n, e, "none", gp.original));
   S.contact_moments.push_back(summarize_contacts(d, n, e, "flux", gp.chaos));
+  for (const auto& [mode, runs] : {std::pair{"none", &gp.original}, std::pair{"flux", &gp.chaos}})
+    for (auto& row : summarize_impact_parameter(d, n, e, mode, *runs))
+      S.impact_parameter.push_back(std::move(row));
   S.decomposition.push_back(decompose_cooling(gp));
   pairs.push_back(std::move(gp));
 }
@@ -311,6 +315,8 @@ CorrelationStudy run_correlation_study(const CorrelationStudyConfig& cfg,
   cooling_claims(S);
   ansatz_claims(S);
   control_claims(S);
+  for (auto& c : impact_parameter_claims(S.impact_parameter)) S.claims.push_back(std::move(c));
+  S.config = cfg;
   S.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return S;
 }
@@ -348,6 +354,16 @@ std::string pair_correlations_csv(const CorrelationStudy& S) {
 void write_correlation_tables(const CorrelationStudy& S, const std::string& directory) {
   write_file_atomically(directory + "/contact_moments.csv", contact_moments_csv(S));
   write_file_atomically(directory + "/pair_correlations.csv", pair_correlations_csv(S));
+  const auto& c = S.config;
+  write_file_atomically(
+      directory + "/impact_parameter.csv",
+      impact_parameter_csv(
+          S.impact_parameter,
+          fmt::format("# molchaos reproduce, correlation study: particles = {}, seeds = {} (d = "
+                      "2), {} (d = 3), base_seed = {}; window: the Haff fit's\n"
+                      "# impact parameter s = (1 - (g.e/|g|)^2)^((d-1)/2) of the colliding "
+                      "pairs, uniform under molecular chaos\n",
+                      c.particles, c.contact_seeds, c.seeds_3d, c.base_seed)));
 }
 
 }  // namespace molchaos::validation

@@ -39,6 +39,7 @@ struct CorrelationStudyConfig {
 struct CorrelationStudy {
   std::vector<ContactMomentRow> contact_moments;
   std::vector<PairCorrelationRow> pair_correlations;
+  std::vector<ImpactParameterRow> impact_parameter;  ///< per gas, point and bin of s
   std::vector<CoolingDecompositionRow> decomposition;
   std::vector<AnsatzFitRow> ansatz;
   BRoutesVerdict b_routes;         ///< printed ansatz: b_cooling against b_contact
@@ -46,6 +47,7 @@ struct CorrelationStudy {
   std::vector<StudyClaim> claims;  ///< claim, verdict, deciding number
   int failed_runs = 0;
   double seconds = 0.0;
+  CorrelationStudyConfig config;  ///< what ran (the tables' headers)
 };
 
 /// Runs (or loads from the cache) everything the study needs and analyses it.
@@ -56,7 +58,8 @@ CorrelationStudy run_correlation_study(const CorrelationStudyConfig& config,
 std::string contact_moments_csv(const CorrelationStudy& study);
 std::string pair_correlations_csv(const CorrelationStudy& study);
 
-/// Writes directory/contact_moments.csv and directory/pair_correlations.csv atomically.
+/// Writes directory/contact_moments.csv, pair_correlations.csv and impact_parameter.csv
+/// atomically.
 void write_correlation_tables(const CorrelationStudy& study, const std::string& directory);
 
 }  // namespace molchaos::validation

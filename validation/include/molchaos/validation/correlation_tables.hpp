@@ -21,6 +21,25 @@ struct ContactMomentRow {
   int impact_dof = 0;
 };
 
+/// One bin of one gas's impact-parameter histogram at one state point, s = (1 − (ĝ·e)²)^((d−1)/2)
+/// of the colliding pairs in the homogeneous-cooling window: uniform on [0, 1) under molecular
+/// chaos, so every fraction is 1/bins there.
+struct ImpactParameterRow {
+  int dimension = 2;
+  double density = 0.0, restitution = 0.0;
+  std::string mode;
+  int runs = 0;
+  double s_lo = 0.0, s_hi = 0.0;
+  Measurement fraction;  ///< of the collisions in [s_lo, s_hi): mean ± standard error over runs
+  /// The run-to-run variance of the fraction over the multinomial variance p(1 − p)/collisions:
+  /// near 1 when the collisions' impact parameters are independent draws (then the χ² is exact).
+  double scatter_over_multinomial = 0.0;
+  /// Pearson χ² of the point's pooled counts against flat (the same on each bin of the point).
+  double flatness_chi2 = 0.0;
+  int flatness_dof = 0;
+  double flatness_p = 1.0;
+};
+
 /// One r bin of the pair correlations of one gas at one time.
 struct PairCorrelationRow {
   int dimension = 2;
