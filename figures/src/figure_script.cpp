@@ -294,6 +294,21 @@ void add_plot_element(std::string& plot, const std::string& element) {
   plot += (plot.empty() ? "  plot " : ", \\\n       ") + element;
 }
 
+namespace {
+double epsilon_span(double eps_min, double eps_max) { return std::max(eps_max - eps_min, 0.05); }
+}  // namespace
+
+void set_density_panel(std::string& commands, double density, double eps_min, double eps_max) {
+  const double pad = 0.04 * epsilon_span(eps_min, eps_max);
+  commands += "  set title " + quote("n = " + label_number(density)) + "\n";
+  commands += "  set xrange [" + number(eps_min - pad) + ":" + number(eps_max + pad) + "]\n";
+}
+
+double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max) {
+  return 0.006 * epsilon_span(eps_min, eps_max) *
+         (static_cast<double>(index) - 0.5 * static_cast<double>(count - 1));
+}
+
 std::string gas_point_type(const std::string& mode, std::size_t index) {
   if (mode == "none") return "9";   // filled triangle
   if (mode == "paper") return "5";  // filled square

@@ -61,6 +61,13 @@ void add_plot_element(std::string& plot, const std::string& element);
 std::string gas_point_type(const std::string& mode, std::size_t index);
 std::size_t gas_colour_index(const std::string& mode, std::size_t index);
 
+/// The title "n = <density>" and the ε range (the points' with 4 % margins) of one panel against ε.
+void set_density_panel(std::string& commands, double density, double eps_min, double eps_max);
+
+/// Sideways offset of series `index` of `count` drawn at the same ε, so that their error bars do
+/// not hide one another: a few thousandths of the panel's ε span, centred on zero.
+double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max);
+
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position);

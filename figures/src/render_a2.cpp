@@ -53,7 +53,6 @@ RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& op
     const std::string prefix = "p" + std::to_string(p);
     const auto [eps_min, eps_max] =
         checked_epsilon_range(panel, "A2Data.panels[" + std::to_string(p) + "]");
-    const double span = std::max(eps_max - eps_min, 0.05);
     std::string plot;
     if (!panel.theory_restitution.empty()) {
       detail::Rows theory;
@@ -72,8 +71,7 @@ RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& op
     const auto count = panel.series.size();
     for (std::size_t s = 0; s < count; ++s) {
       const auto& series = panel.series[s];
-      const double shift =
-          0.006 * span * (static_cast<double>(s) - 0.5 * static_cast<double>(count - 1));
+      const double shift = detail::sideways_shift(s, count, eps_min, eps_max);
       detail::Rows rows;
       for (std::size_t i = 0; i < series.restitution.size(); ++i)
         rows.push_back({series.restitution[i], series.a2[i].value, std::abs(series.a2[i].error),
@@ -86,10 +84,7 @@ RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& op
                                          detail::colour(detail::gas_colour_index(series.mode, s)) +
                                          " title " + detail::quote(series.label));
     }
-    const double pad = 0.04 * span;
-    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
-    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
-         "]\n";
+    detail::set_density_panel(c, panel.density, eps_min, eps_max);
     // Room below the data for the key.
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.05, graph 0.45\n";
     c += plot + "\n";

@@ -85,10 +85,7 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
       elements.push_back(
           "keyentry with lines linecolor rgb '#555555' linewidth 1 title 'least-squares fits'");
     }
-    const double pad = 0.04 * std::max(eps_max - eps_min, 0.05);
-    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
-    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
-         "]\n";
+    detail::set_density_panel(c, panel.density, eps_min, eps_max);
     // Leave room above the data for the key.
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
     c += "  plot ";

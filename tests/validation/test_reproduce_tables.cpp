@@ -1,6 +1,6 @@
 // The tables `molchaos reproduce` writes for other tools, from small synthetic results: every
 // point of Fig. 4 (the MD gases and DSMC) in fig4_A_of_eps.csv; every gas's a2 and the Sonine
-// theory's in a2_of_eps.csv.
+// theory's in a2_of_eps.csv; the a2(ε) figure in REPORT.md with its caption.
 #define BOOST_TEST_MODULE validation_reproduce_tables
 #include <boost/test/unit_test.hpp>
 #include <sstream>
@@ -87,4 +87,15 @@ BOOST_AUTO_TEST_CASE(a2_csv_holds_every_gas_and_both_theory_levels) {
   BOOST_TEST(lines[5] == "2,0.05,0.800,first_sonine,-0.02,0");
   BOOST_TEST(lines[10] == "2,0.05,0.810,a2_a3,-0.027,1e-13");
   BOOST_TEST(csv.starts_with("# molchaos reproduce"));
+}
+
+// The report embeds every figure the reproduction renders with a caption saying what to look at.
+BOOST_AUTO_TEST_CASE(the_a2_figure_has_a_caption) {
+  const ReproduceResults r = synthetic_results();
+  for (const char* file : {"fig4_A_of_eps.png", "fig_a2_of_eps.png"}) {
+    BOOST_TEST_INFO(file);
+    BOOST_TEST(figure_caption(file, r).find("Look at") != std::string::npos);
+  }
+  const std::string report = report_markdown(r, {"fig_a2_of_eps.png"}, "test");
+  BOOST_TEST(report.find("![fig_a2_of_eps.png](fig_a2_of_eps.png)") != std::string::npos);
 }

@@ -229,6 +229,39 @@ BOOST_AUTO_TEST_CASE(sweep_spec_validation) {
   BOOST_CHECK_THROW(validate(s), std::invalid_argument);
 }
 
+// Two methods at the same state points: each runs the listed modes it can (DSMC only none), in
+// the listed order, with the same seeds; a mode or a method left without runs is refused.
+BOOST_AUTO_TEST_CASE(sweep_over_methods_pairs_each_with_the_modes_it_runs) {
+  using sim::Method;
+  using sim::Randomization;
+  EnsembleSpec s;
+  s.particles = 200;
+  s.restitutions = {0.8, 0.9};
+  s.seeds = 2;
+  s.methods = {Method::edmd, Method::dsmc};
+  s.modes = {Randomization::none, Randomization::paper, Randomization::flux};
+  const auto kinds = run_kinds(s);
+  BOOST_TEST_REQUIRE(kinds.size() == 4u);
+  BOOST_TEST((kinds[3].method == Method::dsmc && kinds[3].mode == Randomization::none));
+  const auto runs = expand(s);
+  BOOST_TEST_REQUIRE(runs.size() == 2u * 4u * 2u);
+  for (std::size_t k = 0; k < 4; ++k) {  // the first state point: kinds × seeds
+    BOOST_TEST((runs[2 * k].method == kinds[k].method));
+    BOOST_TEST((runs[2 * k].randomize == kinds[k].mode));
+    BOOST_TEST(runs[2 * k + 1].seed == runs[1].seed);
+  }
+  BOOST_CHECK_NO_THROW(validate(s));
+  s.methods = {Method::dsmc};
+  BOOST_CHECK_EXCEPTION(validate(s), std::invalid_argument, [](const auto& e) {
+    return std::string(e.what()).starts_with("modes: value paper");
+  });
+  s.methods = {Method::edmd, Method::dsmc};
+  s.modes = {Randomization::flux};
+  BOOST_CHECK_EXCEPTION(validate(s), std::invalid_argument, [](const auto& e) {
+    return std::string(e.what()).starts_with("methods: value dsmc");
+  });
+}
+
 // A point where no run succeeded has no A: nan (printed as such in every table), not 0.
 BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   const PointSummary s = summarize_point({}, WindowRule{});

@@ -200,7 +200,7 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   // DSMC runs cost milliseconds: several times the MD's seeds buy error bars several times
   // smaller, so that a difference between the flux gas and DSMC is the MD's to explain.
   R.dsmc_spec = R.fig4_spec;
-  R.dsmc_spec.method = sim::Method::dsmc;
+  R.dsmc_spec.methods = {sim::Method::dsmc};
   R.dsmc_spec.modes = {sim::Randomization::none};
   R.dsmc_spec.seeds = steps::k_dsmc_seed_factor * cfg.seeds;
 }
