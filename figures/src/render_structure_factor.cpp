@@ -115,4 +115,25 @@ RenderedFigure render_structure_factors(const std::vector<validation::StructureF
   return detail::render(script, options);
 }
 
+RenderedFigure render_linear_hydrodynamics(
+    const std::vector<validation::StructureFactorCurve>& curves, const std::string& title,
+    const std::string& basename, const RenderOptions& options) {
+  detail::require_non_empty("curves", curves.size());
+  detail::FigureScript script;
+  script.basename = basename;
+  script.description =
+      "S_perp(k, tau) of the largest shear modes in boxes above and below L_c against linear\n"
+      "hydrodynamics (no free parameter). sperp blocks: tau, S_perp (run mean), standard error,\n"
+      "linear prediction.";
+  script.canvas.png_width = 1000;
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = 5.0;
+  script.canvas.pdf_height = 3.8;
+  script.commands += "  set multiplot title " + detail::quote(title) + "\n";
+  script.commands += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  linear_theory_panel(script, curves);
+  script.commands += "  unset multiplot\n";
+  return detail::render(script, options);
+}
+
 }  // namespace molchaos::figures

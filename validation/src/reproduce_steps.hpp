@@ -63,6 +63,7 @@ Claim finding_dsmc_a2_against_sonine(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);
+Claim finding_breakdown_prediction_3d(const ReproduceResults& results);
 
 // --- studies with runs of their own (reproduce_studies.cpp) -----------------------------------
 /// Runs the correlation study (and, at paper scale, the break-down study) into `results`.
