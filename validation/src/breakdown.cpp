@@ -332,7 +332,7 @@ void append_curves(const Box& box, const theory::TransportCoefficients& c,
 }  // namespace
 
 // The d = 3 set, chosen from the theory alone (`molchaos theory --dim 3 --restitution 0.7
-// --density 0.2 --particles 2800`): at the paper's n = 0.05–0.1, ε = 0.93, L_c ≈ 131σ and a box
+// --density 0.2 --particles 2800`): at the paper's n = 0.05, ε = 0.93, L_c = 131σ and a box
 // above it needs ~10^5 spheres. At ε = 0.7, n = 0.2 (packing fraction 0.105, where the Enskog
 // coefficients in the first Sonine approximation hold) L_c = 2π/k⊥ = 16.6σ and the heat mode's
 // 2π/k∥ = 26.3σ. N = 2800 gives a box of 24.1σ between the two, so only the shear mode of the

@@ -246,7 +246,8 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
   if (file.starts_with("fig_structure_factor_3d")) {
     const auto spec = BreakdownSpec::three_dimensional();
     const auto hydro = theory::transport_coefficients({3, spec.density, spec.restitution, {}});
-    const auto paper_like = theory::transport_coefficients({3, 0.1, c.fig3_restitution, {}});
+    const auto paper_like =
+        theory::transport_coefficients({3, c.fig3_density, c.fig3_restitution, {}});
     const double paper_box = theory::critical_box_size(paper_like);
     return fmt::format(
         "Linear hydrodynamics in d = 3 (ε = {}, n = {}): S⊥(k, τ) of the largest shear modes, "
@@ -255,14 +256,15 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
         "point is the theory's choice: there L_c = 2π/k⊥ = {:.1f}σ and the heat mode's 2π/k∥ = "
         "{:.1f}σ (`molchaos theory --dim 3 --restitution {} --density {} --particles {}`), so the "
         "large box ({:.1f}σ) has only growing shear modes and the small one ({:.1f}σ) none; at "
-        "ε = {}, n = 0.1, L_c = {:.0f}σ, and a box above it holds more than {:.0f} spheres. Look "
+        "the paper's ε = {}, n = {}, L_c = {:.0f}σ, and a box above it holds more than {:.0f} "
+        "spheres. Look "
         "at the growth in the large box and the saturation below L_c.",
         spec.restitution, spec.density, spec.runs, spec.unstable_particles, spec.stable_particles,
         theory::critical_box_size(hydro), 2 * M_PI / theory::critical_heat_wavenumber(hydro),
         spec.restitution, spec.density, spec.unstable_particles,
         std::cbrt(static_cast<double>(spec.unstable_particles) / spec.density),
         std::cbrt(static_cast<double>(spec.stable_particles) / spec.density), c.fig3_restitution,
-        paper_box, 0.1 * paper_box * paper_box * paper_box);
+        c.fig3_density, paper_box, c.fig3_density * paper_box * paper_box * paper_box);
   }
   return "";
 }
