@@ -278,8 +278,8 @@ std::string animation_line(const ReproduceResults& r, const std::vector<std::str
   const auto& frames = r.gas_fields.animation.rows;
   return fmt::format(
       "Animation of the same fields, original gas beside the flux-shuffled gas, {} frames from "
-      "ln t = {:.3g} to {:.3g} (the first run of each gas): [fig_flow_field.gif]"
-      "(fig_flow_field.gif)\n\n",
+      "ln t = {:.3g} to {:.3g} (the first run of each gas):\n\n"
+      "![fig_flow_field.gif](fig_flow_field.gif)\n\n",
       frames.size(), frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).front(),
       frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).back());
 }
