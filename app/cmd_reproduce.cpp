@@ -72,13 +72,25 @@ void run_reproduce(const ReproduceCliOptions& o) {
         if (file.ends_with(".png"))
           figure_files.push_back(std::filesystem::path(file).filename().string());
     // The break-down figures exist at paper scale only (the quick look skips their runs).
-    if (!results.gas_fields.series.empty())
+    if (!results.gas_fields.series.empty()) {
+      const auto spec3 = validation::BreakdownSpec::three_dimensional();
       for (const auto& f :
            {figures::render_flow_field(results.gas_fields.fields, ro),
-            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro)})
+            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro),
+            figures::render_linear_hydrodynamics(
+                results.breakdown_curves_3d,
+                fmt::format("d = 3, n = {}, ε = {}", spec3.density, spec3.restitution),
+                "fig_structure_factor_3d", ro)})
         for (const auto& file : f.files)
           if (file.ends_with(".png"))
             figure_files.push_back(std::filesystem::path(file).filename().string());
+      // The animation needs gnuplot's gif terminal; without it the report says so.
+      if (figures::gnuplot_has_terminal("gif", ro))
+        for (const auto& file :
+             figures::render_flow_field_animation(results.gas_fields.animation, ro).files)
+          if (file.ends_with(".gif"))
+            figure_files.push_back(std::filesystem::path(file).filename().string());
+    }
   }
 #endif
   const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";

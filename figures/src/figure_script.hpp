@@ -25,6 +25,10 @@ struct FigureScript {
   std::vector<std::pair<std::string, Rows>> data;  ///< data block name (without '$') and rows
   std::string commands;                            ///< plot commands, run once per terminal
   Canvas canvas;
+  /// > 0: one animated GIF (gnuplot's `gif animate`, each page a frame, this many 1/100 s apart,
+  /// the PNG's size) instead of the PNG and PDF
+  int gif_frame_delay = 0;
+  std::string image_stem;  ///< the images' file stem when it is not `basename` (the script's)
 };
 
 /// Writes <basename>.gp and the requested images into options.output_directory.

@@ -285,6 +285,22 @@ BOOST_AUTO_TEST_CASE(simulation_cost_renders_png_pdf_and_script) {
                  "work_precision_simulation");
 }
 
+BOOST_AUTO_TEST_CASE(linear_hydrodynamics_renders_png_pdf_and_script) {
+  const OutputDirectory out("linear_hydrodynamics");
+  val::StructureFactorCurve curve;
+  curve.dimension = 3;
+  curve.wavenumber = 0.26;
+  curve.box = 24;
+  curve.tau = {1, 2, 3};
+  curve.measured = {1.2, 1.5, 1.9};
+  curve.error = {0.1, 0.1, 0.2};
+  curve.predicted = {1.2, 1.6, 2.0};
+  check_rendered(fig::render_linear_hydrodynamics({curve}, "d = 3", "fig_sf3", out.options()),
+                 out.path, "fig_sf3");
+  check_invalid_argument(
+      [&] { fig::render_linear_hydrodynamics({}, "d = 3", "fig_sf3", out.options()); }, "curves");
+}
+
 BOOST_AUTO_TEST_CASE(png_only_writes_no_pdf) {
   const OutputDirectory out("png_only");
   auto options = out.options();

@@ -15,6 +15,7 @@
 #include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/haff_fit.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/sweep.hpp"
 
 using namespace molchaos;
@@ -270,4 +271,18 @@ BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   BOOST_TEST(std::isnan(s.A.error));
   BOOST_TEST(std::isnan(s.a2.value));
   BOOST_TEST(std::isnan(s.mean_dyad.value));
+}
+
+// The report page embeds an animation as a GIF data URI and a still figure as a PNG one.
+BOOST_AUTO_TEST_CASE(report_html_embeds_gif_and_png_by_type) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "molchaos_report_html_types";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.gif", std::ios::binary) << "GIF89a";
+  std::ofstream(dir / "b.png", std::ios::binary) << "\x89PNG";
+  const std::string html =
+      report_html("# r\n\n![a.gif](a.gif)\n\n![b.png](b.png)\n", dir.string());
+  BOOST_TEST(html.find("data:image/gif;base64," + base64("GIF89a")) != std::string::npos);
+  BOOST_TEST(html.find("data:image/png;base64," + base64("\x89PNG")) != std::string::npos);
+  fs::remove_all(dir);
 }

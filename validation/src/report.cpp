@@ -5,12 +5,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/theory/hydrodynamics.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/validation/verdict.hpp"
 #include "reproduce_steps.hpp"
@@ -275,8 +277,57 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
         "coarse-grained velocity field. Look at whether the density is still uniform and "
         "whether neighbouring arrows align (clusters and vortices).",
         c.fig3_restitution, c.fig3_density);
+  if (file.starts_with("fig_flow_field"))
+    return fmt::format(
+        "Flow and density fields of the original gas and the randomized gases (ε = {}, n = {}, "
+        "N = {}), built from the Fourier modes |m|² ≤ {} of one run each: the mean velocity as "
+        "arrows over its vorticity (colour), and the density over its mean. Look for the vortices "
+        "that grow first in the original gas and the density clusters that follow, and for any "
+        "structure in the shuffled gases.",
+        r.gas_fields.spec.restitution, r.gas_fields.spec.density, r.gas_fields.spec.particles,
+        r.gas_fields.spec.field_max_norm2);
+  if (file.starts_with("fig_structure_factor_3d")) {
+    const auto spec = BreakdownSpec::three_dimensional();
+    const auto hydro = theory::transport_coefficients({3, spec.density, spec.restitution, {}});
+    const auto paper_like =
+        theory::transport_coefficients({3, c.fig3_density, c.fig3_restitution, {}});
+    const double paper_box = theory::critical_box_size(paper_like);
+    return fmt::format(
+        "Linear hydrodynamics in d = 3 (ε = {}, n = {}): S⊥(k, τ) of the largest shear modes, "
+        "run mean ± standard error over {} runs (points), against the prediction with no free "
+        "parameter (lines), in a box of N = {} above L_c and one of N = {} below it. The state "
+        "point is the theory's choice: there L_c = 2π/k⊥ = {:.1f}σ and the heat mode's 2π/k∥ = "
+        "{:.1f}σ (`molchaos theory --dim 3 --restitution {} --density {} --particles {}`), so the "
+        "large box ({:.1f}σ) has only growing shear modes and the small one ({:.1f}σ) none; at "
+        "the paper's ε = {}, n = {}, L_c = {:.0f}σ, and a box above it holds more than {:.0f} "
+        "spheres. Look "
+        "at the growth in the large box and the saturation below L_c.",
+        spec.restitution, spec.density, spec.runs, spec.unstable_particles, spec.stable_particles,
+        theory::critical_box_size(hydro), 2 * M_PI / theory::critical_heat_wavenumber(hydro),
+        spec.restitution, spec.density, spec.unstable_particles,
+        std::cbrt(static_cast<double>(spec.unstable_particles) / spec.density),
+        std::cbrt(static_cast<double>(spec.stable_particles) / spec.density), c.fig3_restitution,
+        c.fig3_density, paper_box, c.fig3_density * paper_box * paper_box * paper_box);
+  }
   return "";
 }
+
+namespace {
+
+// The flow-field animation beside the still figure, or why there is none.
+std::string animation_line(const ReproduceResults& r, const std::vector<std::string>& figures) {
+  if (std::find(figures.begin(), figures.end(), "fig_flow_field.gif") == figures.end())
+    return "Animation: not made, gnuplot on this machine has no gif terminal.\n\n";
+  const auto& frames = r.gas_fields.animation.rows;
+  return fmt::format(
+      "Animation of the same fields, original gas beside the flux-shuffled gas, {} frames from "
+      "ln t = {:.3g} to {:.3g} (the first run of each gas):\n\n"
+      "![fig_flow_field.gif](fig_flow_field.gif)\n\n",
+      frames.size(), frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).front(),
+      frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).back());
+}
+
+}  // namespace
 
 std::string report_markdown(const ReproduceResults& r, const std::vector<std::string>& figures,
                             const std::string& command) {
@@ -287,9 +338,11 @@ std::string report_markdown(const ReproduceResults& r, const std::vector<std::st
   s += setup_section(r, command);
   s += "## Figures\n\n";
   for (const auto& f : figures) {
+    if (f.ends_with(".gif")) continue;  // linked beside its still figure
     s += fmt::format("![{}]({})\n\n", f, f);
     const std::string caption = figure_caption(f, r);
     if (!caption.empty()) s += "*" + caption + "*\n\n";
+    if (f == "fig_flow_field.png") s += animation_line(r, figures);
   }
   s += verdict_table(r);
   s += fig4_tables(r);

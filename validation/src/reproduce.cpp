@@ -103,6 +103,7 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,
     steps::finding_breakdown_prediction,
+    steps::finding_breakdown_prediction_3d,
     steps::finding_onset_from_linear_theory,
     steps::finding_flow_energy_share,
     steps::finding_estimator_precision,

@@ -64,6 +64,7 @@ Claim finding_dsmc_a2_against_sonine(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);
+Claim finding_breakdown_prediction_3d(const ReproduceResults& results);
 
 // --- the precision of the Fig. 4 ensembles (reproduce_precision.cpp) ---------------------------
 /// Largest SE(A)/A over the Fig. 4 points with at least two runs.

@@ -68,6 +68,8 @@ struct ReproduceResults {
   CorrelationStudy correlations;            ///< the two-particle distribution (runs of its own)
   std::vector<BreakdownRow> breakdown;      ///< linear hydrodynamics against the runs (paper scale)
   std::vector<StructureFactorCurve> breakdown_curves;  ///< S⊥(k, τ) behind `breakdown`
+  std::vector<BreakdownRow> breakdown_3d;  ///< the same in d = 3 (BreakdownSpec::three_dimensional)
+  std::vector<StructureFactorCurve> breakdown_curves_3d;  ///< S⊥(k, τ) behind `breakdown_3d`
   std::vector<FlowEnergyPoint> flow_energy;  ///< flow's share of T, t ≤ 4τ0 (paper scale)
   GasFieldStudy gas_fields;  ///< original and randomized gases through the break-down (paper scale)
   std::vector<Claim> claims;  ///< the paper's claims first, then the suite's
