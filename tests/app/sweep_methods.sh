@@ -6,10 +6,8 @@
 # one-method sweeps with the method in a column; the header names the methods.
 set -u
 bin=$(realpath "$1")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-cd "$dir" || exit 1
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 
 args=(sweep --particles 200 --density 0.05 --restitution 0.8,0.9 --seeds 2 --t-end-tau0 2
       --quiet --threads 2 --cache cache)
