@@ -69,13 +69,14 @@ Measurement seed_correlation(const std::vector<const PointSummary*>& a,
 std::vector<EstimatorScatter> compare_estimator_scatter(
     const std::vector<const PointSummary*>& points) {
   const std::size_t fit = index_of(HaffEstimator::least_squares);
+  std::vector<std::vector<std::array<double, k_haff_estimators.size()>>> per_point;
+  for (const auto* p : points) per_point.push_back(complete_runs(*p));
   std::vector<EstimatorScatter> out;
   for (std::size_t e = 0; e < k_haff_estimators.size(); ++e) {
     double weighted_variance = 0.0;
     int dof = 0;
     std::vector<double> shifts;
-    for (const auto* p : points) {
-      const auto runs = complete_runs(*p);
+    for (const auto& runs : per_point) {
       if (runs.size() < 2) continue;
       std::vector<double> a;
       for (const auto& run : runs) {
