@@ -96,8 +96,10 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
 /// the parameter table's flag, or for the list fields of a sweep the flag of their element.
 inline std::string flag_of_field(const std::string& field) {
   if (const sim::ParameterInfo* info = sim::find_parameter(field)) return std::string(info->flag);
-  static const std::pair<const char*, const char*> lists[] = {
-      {"densities", "density"}, {"restitutions", "restitution"}, {"modes", "randomize"}};
+  static const std::pair<const char*, const char*> lists[] = {{"densities", "density"},
+                                                              {"restitutions", "restitution"},
+                                                              {"modes", "randomize"},
+                                                              {"methods", "method"}};
   for (const auto& [name, element] : lists)
     if (field == name) return std::string(sim::find_parameter(element)->flag);
   if (field == "t_end_in_tau0") return "--t-end-tau0";

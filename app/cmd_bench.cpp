@@ -23,6 +23,7 @@
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/reference_values.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/report.hpp"
 #include "molchaos/version.hpp"
 #ifdef MOLCHAOS_HAVE_FIGURES
@@ -153,6 +154,7 @@ void bench_simulation(const BenchOptions& o) {
                            "cpu/run", "A", "rel. bias", "rel. sd", "0.5 %: s (seeds)",
                            "0.1 %: s (seeds)");
   validation::SimulationWorkPrecisionData data;
+  std::string estimator_lines;  // after the table, so that the CSV's rows stay together
   data.title = "flux gas, d = 2, n = 0.05, {/Symbol e} = 0.9: standard error of A against cost";
   for (long long n : o.particles) {
     validation::EnsembleSpec spec;
@@ -185,6 +187,18 @@ void bench_simulation(const BenchOptions& o) {
     data.points.push_back(p);
     const auto [t05, n05] = cost_to_reach(p, 5e-3);
     const auto [t01, n01] = cost_to_reach(p, 1e-3);
+    // The same runs through every τ0 estimator: CPU seconds to 0.1 % with each (paired: the
+    // difference is the estimator's alone, not the runs').
+    std::string by_estimator;
+    for (const auto& e : validation::compare_estimator_scatter({&s})) {
+      validation::SimulationCostPoint q = p;
+      q.relative_sd_per_run = e.relative_sd_per_run;
+      by_estimator += fmt::format("{}{} {:.1f} s", by_estimator.empty() ? "" : ", ",
+                                  validation::to_string(e.estimator), cost_to_reach(q, 1e-3).first);
+    }
+    const std::string estimator_line =
+        fmt::format("N = {}: CPU seconds to 0.1 % on A by estimator (same runs): {}", n,
+                    by_estimator);
     std::cout << fmt::format(
         "{:>7} {:>5} {:>9.3f} {:>9.4f} ± {:<6.4f} {:>+9.2e} ± {:<8.1e} {:>9.2e} {:>8.1f} ({:>5}) "
         "{:>8.1f} ({:>5})\n",
@@ -194,6 +208,8 @@ void bench_simulation(const BenchOptions& o) {
                        n, p.seeds, p.cpu_seconds_per_run, s.A.value, s.A.error, theory,
                        p.relative_bias, p.relative_bias_error, p.relative_sd_per_run, t05, n05,
                        t01, n01);
+    std::cout << "  " << estimator_line << '\n';
+    estimator_lines += "# " + estimator_line + '\n';
   }
   // The scatter of A over runs falls as 1/sqrt(N) (independent particles); pooling sd * sqrt(N)
   // over every N (weighted by degrees of freedom) estimates it far better than the few seeds of the
@@ -206,6 +222,7 @@ void bench_simulation(const BenchOptions& o) {
     sum_var += (p.seeds - 1) * p.relative_sd_per_run * p.relative_sd_per_run *
                static_cast<double>(p.particles);
   }
+  csv += estimator_lines;
   const double pooled = std::sqrt(sum_var / sum_dof);  // relative sd per run times sqrt(N)
   const std::string pooled_line =
       fmt::format("pooled relative sd per run x sqrt(N) = {:.3f} ({} degrees of freedom)", pooled,

@@ -1,6 +1,6 @@
 // `molchaos reproduce`: regenerates the paper's results into one folder: the figures, REPORT.md,
-// REPORT.html, fig4_A_of_eps.csv. Runs are cached in <out>/cache, so an interrupted reproduction
-// resumes.
+// REPORT.html, fig4_A_of_eps.csv, a2_of_eps.csv. Runs are cached in <out>/cache, so an interrupted
+// reproduction resumes.
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -62,7 +62,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
     ro.output_directory = o.out;
     for (const auto& f :
          {figures::render_fig3(results.fig3, ro), figures::render_fig4(results.fig4, ro),
-          figures::render_b(results.b, ro), figures::render_snapshot(results.snapshot, ro),
+          figures::render_b(results.b, ro), figures::render_a2(results.a2, ro),
+          figures::render_snapshot(results.snapshot, ro),
           figures::render_pair_correlations(results.correlations.pair_correlations, 2, 0.1, 0.8,
                                             ro),
           figures::render_contact_moments(results.correlations.contact_moments, ro),
@@ -72,20 +73,35 @@ void run_reproduce(const ReproduceCliOptions& o) {
         if (file.ends_with(".png"))
           figure_files.push_back(std::filesystem::path(file).filename().string());
     // The break-down figures exist at paper scale only (the quick look skips their runs).
-    if (!results.gas_fields.series.empty())
+    if (!results.gas_fields.series.empty()) {
+      const auto spec3 = validation::BreakdownSpec::three_dimensional();
       for (const auto& f :
            {figures::render_flow_field(results.gas_fields.fields, ro),
-            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro)})
+            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro),
+            figures::render_linear_hydrodynamics(
+                results.breakdown_curves_3d,
+                fmt::format("d = 3, n = {}, ε = {}", spec3.density, spec3.restitution),
+                "fig_structure_factor_3d", ro)})
         for (const auto& file : f.files)
           if (file.ends_with(".png"))
             figure_files.push_back(std::filesystem::path(file).filename().string());
+      // The animation needs gnuplot's gif terminal; without it the report says so.
+      if (figures::gnuplot_has_terminal("gif", ro))
+        for (const auto& file :
+             figures::render_flow_field_animation(results.gas_fields.animation, ro).files)
+          if (file.ends_with(".gif"))
+            figure_files.push_back(std::filesystem::path(file).filename().string());
+    }
   }
 #endif
   const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
+  validation::write_file_atomically((std::filesystem::path(o.out) / "a2_of_eps.csv").string(),
+                                    validation::a2_csv(results));
   validation::write_correlation_tables(results.correlations, o.out);
   validation::write_breakdown_tables(results, o.out);
+  validation::write_estimator_table(results, o.out);
   const std::string markdown = validation::report_markdown(results, figure_files, command);
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);
@@ -93,8 +109,9 @@ void run_reproduce(const ReproduceCliOptions& o) {
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.html").string(),
                                     validation::report_html(markdown, o.out));
   std::cout << fmt::format(
-      "wrote {}/REPORT.md, {}/REPORT.html, {}/fig4_A_of_eps.csv and {} figures in {:.0f} s\n",
-      o.out, o.out, o.out, figure_files.size(), results.seconds);
+      "wrote {}/REPORT.md, {}/REPORT.html, {}/fig4_A_of_eps.csv, {}/a2_of_eps.csv and {} figures "
+      "in {:.0f} s\n",
+      o.out, o.out, o.out, o.out, figure_files.size(), results.seconds);
   std::cout << fmt::format(
       "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
       results.claims.size(), validation::count_not_reproduced(results));

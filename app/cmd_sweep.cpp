@@ -1,5 +1,5 @@
-// `molchaos sweep`: an ensemble of independent runs over state points and randomization modes,
-// cached and resumable, summarised per point (A ± standard error against kinetic theory).
+// `molchaos sweep`: an ensemble of independent runs over state points, methods and randomization
+// modes, cached and resumable, summarised per point (A ± standard error against kinetic theory).
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
@@ -24,6 +24,7 @@ namespace {
 struct SweepCliOptions {
   validation::EnsembleSpec spec;
   std::vector<std::string> modes{"none"};
+  std::vector<std::string> methods{"edmd"};
   std::string cache = "results/cache";
   std::string out;
   int threads = 0;
@@ -35,6 +36,10 @@ void run_sweep_command(SweepCliOptions& o) {
   for (const auto& m : o.modes) {
     o.spec.modes.push_back(*sim::parse_randomization(m));  // checked by the option
   }
+  o.spec.methods.clear();
+  const sim::ParameterInfo& method_row = *sim::find_parameter("method");
+  for (const auto& m : o.methods)  // checked by the option
+    o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
   auto reject_repeats = [](const std::string& flag, auto values) {
     std::sort(values.begin(), values.end());
     const auto repeated = std::adjacent_find(values.begin(), values.end());
@@ -46,6 +51,7 @@ void run_sweep_command(SweepCliOptions& o) {
   reject_repeats("--density", o.spec.densities);
   reject_repeats("--restitution", o.spec.restitutions);
   reject_repeats("--randomize", o.modes);
+  reject_repeats("--method", o.methods);
   for (double n : o.spec.densities)
     if (n >= sim::close_packing_density(o.spec.dimension))
       throw UsageError("--density",
@@ -67,28 +73,30 @@ void run_sweep_command(SweepCliOptions& o) {
   const auto runs = validation::expand(o.spec);
   const auto outcomes = validation::run_sweep(runs, so);
   const auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});
-  std::cout << fmt::format("{:>8} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>5}\n", "density", "eps",
-                           "mode", "A", "A_err", "A_theory", "diff/SE", "runs");
+  std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>5}\n", "density",
+                           "eps", "method", "mode", "A", "A_err", "A_theory", "diff/SE", "runs");
   int failed = 0;
   for (const auto& p : points) {
     const auto& s = p.summary;
     failed += s.failed;
     if (s.restitution >= 1.0) {
       std::cout << fmt::format(
-          "{:>8} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs)\n", s.density,
-          s.restitution, s.mode, p.collision_ratio.value, p.collision_ratio.error, s.runs);
+          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs)\n", s.density,
+          s.restitution, validation::method_name(p.method), s.mode, p.collision_ratio.value,
+          p.collision_ratio.error, s.runs);
       continue;
     }
     // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
     const double se = std::hypot(s.A.error, p.A_theory.error);
     const bool error_bar = s.runs >= 2 && se > 0;
     std::cout << fmt::format(
-        "{:>8} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density, s.restitution,
-        s.mode, s.A.value, error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
+        "{:>8} {:>6} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density,
+        s.restitution, validation::method_name(p.method), s.mode, s.A.value,
+        error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
         error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
-        error_bar        ? ""
-        : s.runs == 0    ? "  (not measured: no run succeeded)"
-                         : "  (no error bar: fewer than 2 runs)");
+        error_bar     ? ""
+        : s.runs == 0 ? "  (not measured: no run succeeded)"
+                      : "  (no error bar: fewer than 2 runs)");
     for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
   }
   if (!o.out.empty()) {
@@ -111,7 +119,14 @@ void add_sweep_command(CLI::App& app) {
   add_parameter_list_option(cmd, "density", o->spec.densities);
   add_parameter_list_option(cmd, "restitution", o->spec.restitutions);
   add_parameter_list_option(cmd, "randomize", o->modes);
-  add_parameter_option(cmd, "method", o->spec.method);
+  add_parameter_list_option(cmd, "method", o->methods)
+      ->description(
+          "Methods (comma separated): edmd (event-driven MD), dsmc (DSMC, velocities only). "
+          "Each runs every --randomize mode it can at every state point: edmd all, dsmc only "
+          "none (a shuffle leaves DSMC unchanged), so `--method edmd,dsmc --randomize none,flux` "
+          "runs DSMC once per state point beside both MD gases. A mode no listed method runs, or "
+          "a method that runs no listed mode, is an error.")
+      ->default_str("edmd");
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
       ->check(integer_in(1, 100000))
       ->capture_default_str();

@@ -20,7 +20,7 @@ def main(table_path, png_path):
     for (density, mode), rows in table.groupby(["density", "randomize"]):
         rows = rows.sort_values("restitution")
         ax.errorbar(rows["restitution"], rows["A"], yerr=rows["A_err"], fmt="o", capsize=2,
-                    label=f"MD, n = {density}, {mode}")
+                    label=f"{'DSMC' if mode == 'dsmc' else 'MD'}, n = {density}, {mode}")
     theory = table.drop_duplicates(["density", "restitution"]).sort_values("restitution")
     for density, rows in theory.groupby("density"):
         ax.plot(rows["restitution"], rows["A_theory"], "-", label=f"theory, n = {density}")

@@ -58,11 +58,18 @@ std::string space_note(const fs::path& directory) {
   return " (" + std::to_string(space.available) + " bytes free in " + directory.string() + ")";
 }
 
-std::string terminal_commands(const Canvas& canvas) {
+std::string terminal_commands(const FigureScript& script) {
+  const Canvas& canvas = script.canvas;
   // Fonts sized for a journal column: the PNG at 1200 px and the PDF at 6 in keep the same
   // proportions of text to plot.
   std::string out;
-  out += "  if (target eq \"png\") {\n";
+  out += "  if (target eq \"gif\") {\n";
+  out += "    set terminal gif animate delay " + std::to_string(script.gif_frame_delay) +
+         " loop 0 optimize size " + std::to_string(canvas.png_width) + "," +
+         std::to_string(canvas.png_height) + " enhanced font 'DejaVu Sans,12'\n";
+  out += "    set output output_gif\n";
+  out += "    font_small = ',10'; point_scale = 1.0\n";
+  out += "  } else { if (target eq \"png\") {\n";
   out += "    set terminal pngcairo size " + std::to_string(canvas.png_width) + "," +
          std::to_string(canvas.png_height) +
          " enhanced font 'DejaVu Sans,17' linewidth 2.2 rounded\n";
@@ -73,8 +80,12 @@ std::string terminal_commands(const Canvas& canvas) {
          number(canvas.pdf_height) + "in enhanced font 'DejaVu Sans,11' linewidth 1.5 rounded\n";
   out += "    set output output_pdf\n";
   out += "    font_small = ',8.5'; point_scale = 0.6\n";
-  out += "  }\n";
+  out += "  } }\n";
   return out;
+}
+
+std::string image_stem(const FigureScript& script) {
+  return script.image_stem.empty() ? script.basename : script.image_stem;
 }
 
 void write_script(const FigureScript& script, const fs::path& path) {
@@ -92,19 +103,24 @@ void write_script(const FigureScript& script, const fs::path& path) {
         line += c;
       }
     }
-    gp << "# Re-plot with `gnuplot " << script.basename << ".gp`: it writes " << script.basename
-       << ".png and " << script.basename << ".pdf\n"
+    const std::string stem = image_stem(script);
+    const bool gif = script.gif_frame_delay > 0;
+    gp << "# Re-plot with `gnuplot " << script.basename << ".gp`: it writes "
+       << (gif ? stem + ".gif" : stem + ".png and " + stem + ".pdf") << "\n"
        << "# into the current directory. Units: sigma = m = k_B = 1, T0 = initial temperature.\n"
-       << "if (!exists(\"targets\")) targets = \"png pdf\"\n"
-       << "if (!exists(\"output_png\")) output_png = " << quote(script.basename + ".png") << "\n"
-       << "if (!exists(\"output_pdf\")) output_pdf = " << quote(script.basename + ".pdf") << "\n\n";
+       << "if (!exists(\"targets\")) targets = " << (gif ? "\"gif\"" : "\"png pdf\"") << "\n";
+    for (const char* ext :
+         gif ? std::vector<const char*>{"gif"} : std::vector<const char*>{"png", "pdf"})
+      gp << "if (!exists(\"output_" << ext << "\")) output_" << ext << " = "
+         << quote(stem + "." + ext) << "\n";
+    gp << "\n";
     for (const auto& [name, rows] : script.data) {
       // A data block ends at a line holding only its terminator; send1d ends its data with "e".
       gp << "$" << name << " << e\n";
       gp.send1d(rows);
     }
     gp << "\ndo for [target in targets] {\n  reset\n"
-       << terminal_commands(script.canvas) << script.commands << "  unset multiplot\n"
+       << terminal_commands(script) << script.commands << "  unset multiplot\n"
        << "  unset output\n}\n";
     errno = 0;
     gp.flush();
@@ -178,7 +194,8 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
   if (options.output_directory.empty()) {
     throw std::invalid_argument("RenderOptions.output_directory is empty");
   }
-  if (!options.png && !options.pdf) {
+  const bool gif = script.gif_frame_delay > 0;
+  if (!gif && !options.png && !options.pdf) {
     throw std::invalid_argument("RenderOptions: neither png nor pdf requested");
   }
   const fs::path directory(options.output_directory);
@@ -195,9 +212,10 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
   TemporaryFiles temporaries;
   std::vector<Output> outputs;
   std::string targets, assignments;
-  for (const auto& [wanted, ext] : {std::pair{options.png, "png"}, std::pair{options.pdf, "pdf"}}) {
+  for (const auto& [wanted, ext] : {std::pair{options.png && !gif, "png"},
+                                    std::pair{options.pdf && !gif, "pdf"}, std::pair{gif, "gif"}}) {
     if (!wanted) continue;
-    const fs::path final_path = directory / (script.basename + "." + ext);
+    const fs::path final_path = directory / (image_stem(script) + "." + ext);
     const fs::path temporary = temporaries.add(final_path);
     outputs.push_back({temporary, final_path});
     targets += (targets.empty() ? "" : " ") + std::string(ext);
@@ -319,6 +337,38 @@ std::string dimension_density_title(int dimension, double density) {
   return "d = " + std::to_string(dimension) + ", n = " + label_number(density);
 }
 
+namespace {
+double epsilon_span(double eps_min, double eps_max) { return std::max(eps_max - eps_min, 0.05); }
+}  // namespace
+
+void set_density_panel(std::string& commands, double density, double eps_min, double eps_max) {
+  const double pad = 0.04 * epsilon_span(eps_min, eps_max);
+  commands += "  set title " + quote("n = " + label_number(density)) + "\n";
+  commands += "  set xrange [" + number(eps_min - pad) + ":" + number(eps_max + pad) + "]\n";
+}
+
+double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max) {
+  return 0.006 * epsilon_span(eps_min, eps_max) *
+         (static_cast<double>(index) - 0.5 * static_cast<double>(count - 1));
+}
+
+std::string gas_point_type(const std::string& mode, std::size_t index) {
+  if (mode == "none") return "9";   // filled triangle
+  if (mode == "paper") return "5";  // filled square
+  if (mode == "flux") return "4";   // open square
+  if (mode == "dsmc") return "6";   // open circle
+  constexpr std::array<const char*, 4> k_others{"7", "11", "13", "6"};
+  return k_others[index % k_others.size()];
+}
+
+std::size_t gas_colour_index(const std::string& mode, std::size_t index) {
+  if (mode == "none") return 1;
+  if (mode == "paper") return 2;
+  if (mode == "flux") return 3;
+  if (mode == "dsmc") return 4;
+  return 4 + index;
+}
+
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position) {
   script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
@@ -336,3 +386,17 @@ void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::s
 }
 
 }  // namespace molchaos::figures::detail
+
+namespace molchaos::figures {
+
+bool gnuplot_has_terminal(const std::string& terminal, const RenderOptions& options) {
+  try {
+    return detail::run_gnuplot(options.gnuplot_executable, {"-e", "set terminal " + terminal},
+                               "probing gnuplot's " + terminal + " terminal")
+               .exit_status == 0;
+  } catch (const std::runtime_error&) {
+    return false;  // no gnuplot at all
+  }
+}
+
+}  // namespace molchaos::figures

@@ -25,6 +25,10 @@ struct FigureScript {
   std::vector<std::pair<std::string, Rows>> data;  ///< data block name (without '$') and rows
   std::string commands;                            ///< plot commands, run once per terminal
   Canvas canvas;
+  /// > 0: one animated GIF (gnuplot's `gif animate`, each page a frame, this many 1/100 s apart,
+  /// the PNG's size) instead of the PNG and PDF
+  int gif_frame_delay = 0;
+  std::string image_stem;  ///< the images' file stem when it is not `basename` (the script's)
 };
 
 /// Writes <basename>.gp and the requested images into options.output_directory.
@@ -67,6 +71,19 @@ void add_series(FigureScript& script, std::string& plot, const std::string& bloc
 
 /// "d = 2, n = 0.1": the title of a panel of one dimension and density.
 std::string dimension_density_title(int dimension, double density);
+
+/// The symbol (gnuplot point type) and colour index of a gas, the same in every figure: the
+/// paper's filled triangle for the original gas (`none`), squares for the shuffled ones (`paper`
+/// filled, `flux` open), an open circle for `dsmc`; `index` picks for any other.
+std::string gas_point_type(const std::string& mode, std::size_t index);
+std::size_t gas_colour_index(const std::string& mode, std::size_t index);
+
+/// The title "n = <density>" and the ε range (the points' with 4 % margins) of one panel against ε.
+void set_density_panel(std::string& commands, double density, double eps_min, double eps_max);
+
+/// Sideways offset of series `index` of `count` drawn at the same ε, so that their error bars do
+/// not hide one another: a few thousandths of the panel's ε span, centred on zero.
+double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max);
 
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,

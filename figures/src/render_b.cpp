@@ -41,15 +41,13 @@ RenderedFigure render_b(const validation::BData& data, const RenderOptions& opti
         eps_max = std::max(eps_max, eps);
       }
     }
-    const double span = std::max(eps_max - eps_min, 0.05);
     std::string plot =
         "  plot 0 with lines linecolor rgb 'black' dashtype (8,5) linewidth 1 "
         "title 'molecular chaos (b = 0)'";
     const auto count = panel.series.size();
     for (std::size_t s = 0; s < count; ++s) {
       const auto& series = panel.series[s];
-      const double shift =
-          0.006 * span * (static_cast<double>(s) - 0.5 * static_cast<double>(count - 1));
+      const double shift = detail::sideways_shift(s, count, eps_min, eps_max);
       detail::Rows rows;
       for (std::size_t i = 0; i < series.restitution.size(); ++i) {
         rows.push_back({series.restitution[i], series.b[i].value, std::abs(series.b[i].error),
@@ -62,10 +60,7 @@ RenderedFigure render_b(const validation::BData& data, const RenderOptions& opti
               " pointsize 1.3*point_scale linewidth 1 linecolor rgb " + detail::colour(s + 1) +
               " title " + detail::quote(series.label);
     }
-    const double pad = 0.04 * span;
-    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
-    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
-         "]\n";
+    detail::set_density_panel(c, panel.density, eps_min, eps_max);
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.5, graph 0.05\n";
     c += plot + "\n";
   }

@@ -2,7 +2,6 @@
 // (squares) stays flat, the original gas (triangles) depends on ε through b(ε) (Eq. 29); the
 // lines are least-squares fits, the dashed line kinetic theory without correlations.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,27 +11,6 @@
 #include "molchaos/figures/render.hpp"
 
 namespace molchaos::figures {
-namespace {
-
-// The paper's symbols: triangles for the original gas, squares for the randomized one.
-std::string point_type(const std::string& mode, std::size_t index) {
-  if (mode == "none") return "9";   // filled triangle
-  if (mode == "paper") return "5";  // filled square
-  if (mode == "flux") return "4";   // open square
-  if (mode == "dsmc") return "6";   // open circle
-  constexpr std::array<const char*, 4> k_others{"7", "11", "13", "6"};
-  return k_others[index % k_others.size()];
-}
-
-std::size_t colour_index(const std::string& mode, std::size_t index) {
-  if (mode == "none") return 1;
-  if (mode == "paper") return 2;
-  if (mode == "flux") return 3;
-  if (mode == "dsmc") return 4;
-  return 4 + index;
-}
-
-}  // namespace
 
 RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions& options) {
   detail::require_non_empty("Fig4Data.panels", data.panels.size());
@@ -73,7 +51,8 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
       eps_max = std::max(eps_max, hi);
       const std::string block = prefix + "_s" + std::to_string(s);
       script.data.emplace_back(block, rows);
-      const std::string colour = "linecolor rgb " + detail::colour(colour_index(series.mode, s));
+      const std::string colour =
+          "linecolor rgb " + detail::colour(detail::gas_colour_index(series.mode, s));
       if (series.fit) {
         // The fitted line spans the series' own ε range, as in the paper.
         const auto& fit = *series.fit;
@@ -89,8 +68,8 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
         any_fit = true;
       }
       elements.push_back("$" + block + " using 1:2:3 with yerrorbars pointtype " +
-                         point_type(series.mode, s) + " pointsize 1.4*point_scale " + colour +
-                         " linewidth 1 title " + detail::quote(series.label));
+                         detail::gas_point_type(series.mode, s) + " pointsize 1.4*point_scale " +
+                         colour + " linewidth 1 title " + detail::quote(series.label));
     }
     if (!panel.theory_A.empty()) {
       detail::Rows theory;
@@ -106,10 +85,7 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
       elements.push_back(
           "keyentry with lines linecolor rgb '#555555' linewidth 1 title 'least-squares fits'");
     }
-    const double pad = 0.04 * std::max(eps_max - eps_min, 0.05);
-    c += "  set title " + detail::quote("n = " + detail::label_number(panel.density)) + "\n";
-    c += "  set xrange [" + detail::number(eps_min - pad) + ":" + detail::number(eps_max + pad) +
-         "]\n";
+    detail::set_density_panel(c, panel.density, eps_min, eps_max);
     // Leave room above the data for the key.
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
     c += "  plot ";

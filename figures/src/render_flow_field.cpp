@@ -47,69 +47,104 @@ Scales common_scales(const validation::FlowFieldData& data) {
   return s;
 }
 
-}  // namespace
+// One row of panel pairs (flow over vorticity, density) with the given scales; `tag` names the
+// row's data blocks.
+void draw_row(detail::FigureScript& script, const std::vector<validation::FlowFieldPanel>& row,
+              const std::string& tag, double speed, double vorticity, double density) {
+  std::string& c = script.commands;
+  for (std::size_t col = 0; col < row.size(); ++col) {
+    const auto& p = row[col];
+    const double w = p.box / p.cells;
+    // about 12 arrows per side, however fine the grid
+    const int stride = std::max(1, p.cells / 12);
+    detail::Rows vort, dens, arrows;
+    for (int y = 0; y < p.cells; ++y)
+      for (int x = 0; x < p.cells; ++x) {
+        const auto i = static_cast<std::size_t>(y * p.cells + x);
+        const double cx = (x + 0.5) * w, cy = (y + 0.5) * w;
+        vort.push_back({cx, cy, p.vorticity[i]});
+        dens.push_back({cx, cy, p.relative_density[i]});
+        if (x % stride == 0 && y % stride == 0)
+          arrows.push_back(
+              {cx, cy, 0.9 * stride * w * p.vx[i] / speed, 0.9 * stride * w * p.vy[i] / speed});
+      }
+    const std::string t = tag + "_" + std::to_string(col);
+    script.data.emplace_back("vort" + t, vort);
+    script.data.emplace_back("dens" + t, dens);
+    script.data.emplace_back("arrows" + t, arrows);
+    const std::string range = "[0:" + detail::number(p.box) + "]";
+    c += "  set xrange " + range + "\n  set yrange " + range + "\n";
+    c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
+    c += "  set cbrange [" + detail::number(-vorticity) + ":" + detail::number(vorticity) + "]\n";
+    c += "  set title " + detail::quote(p.title + ": flow, vorticity") + " font ',9'\n";
+    c += "  plot $vort" + t + " using 1:2:3 with image, $arrows" + t +
+         " using 1:2:3:4 with vectors head size screen 0.004,25 filled lc rgb 'black'\n";
+    c += "  set palette defined (-1 '#01665e', 0 '#f5f5f5', 1 '#8c510a')\n";
+    c += "  set cbrange [" + detail::number(1.0 - density) + ":" + detail::number(1.0 + density) +
+         "]\n";
+    c += "  set title " + detail::quote(p.title + ": density / mean") + " font ',9'\n";
+    c += "  plot $dens" + t + " using 1:2:3 with image\n";
+  }
+}
 
-RenderedFigure render_flow_field(const validation::FlowFieldData& data,
-                                 const RenderOptions& options) {
+// Every row has as many panels as the first, and at least one.
+std::size_t checked_columns(const validation::FlowFieldData& data) {
   detail::require_non_empty("FlowFieldData.rows", data.rows.size());
   const std::size_t columns = data.rows.front().size();
   detail::require_non_empty("FlowFieldData.rows[0]", columns);
   for (const auto& row : data.rows)
     detail::require_same_size("FlowFieldData.rows[r]", row.size(), "columns", columns);
+  return columns;
+}
+
+constexpr const char* k_panel_settings =
+    "  set size ratio -1\n  unset key\n  set tics out nomirror\n  set format x ''\n"
+    "  set format y ''\n";
+
+// The still figure (all times in one multiplot, a row each) or the animation (a frame per time,
+// each its own multiplot page, which gnuplot's `gif animate` turns into a frame).
+detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bool animated) {
+  const std::size_t columns = checked_columns(data);
   const Scales scale = common_scales(data);
+  const auto rows = data.rows.size();
   detail::FigureScript script;
-  script.basename = "fig_flow_field";
+  script.basename = animated ? "fig_flow_field_animation" : "fig_flow_field";
+  script.image_stem = "fig_flow_field";
   script.description =
+      std::string(animated ? "The flow-field figure as an animation, one frame per time.\n" : "") +
       "Flow and density fields: per panel pair, the mean velocity / sqrt(T) as arrows over the\n"
       "vorticity (colour), and the density over its mean (colour). One arrow scale for the whole\n"
       "figure (longest arrow: " +
-      detail::label_number(scale.speed) + " sqrt(T)); colour ranges shared by the panels of a row.";
-  script.canvas.png_width = 700 * static_cast<int>(columns);
-  script.canvas.png_height = 330 * static_cast<int>(data.rows.size());
+      detail::label_number(scale.speed) + " sqrt(T)); colour ranges shared by the panels of a " +
+      (animated ? "frame." : "row.");
+  script.canvas.png_width = (animated ? 520 : 700) * static_cast<int>(columns);
+  script.canvas.png_height = 330 * static_cast<int>(animated ? 1 : rows);
   script.canvas.pdf_width = 3.5 * static_cast<double>(columns);
-  script.canvas.pdf_height = 1.65 * static_cast<double>(data.rows.size());
+  script.canvas.pdf_height = 1.65 * static_cast<double>(rows);
+  // 0.4 s per frame: ~10 s for the reproduction's 24 frames
+  if (animated) script.gif_frame_delay = 40;
   std::string& c = script.commands;
-  c += "  set multiplot layout " + std::to_string(data.rows.size()) + "," +
-       std::to_string(2 * columns) + "\n";
-  c += "  set size ratio -1\n  unset key\n  set tics out nomirror\n  set format x ''\n"
-       "  set format y ''\n";
-  for (std::size_t r = 0; r < data.rows.size(); ++r) {
-    for (std::size_t col = 0; col < columns; ++col) {
-      const auto& p = data.rows[r][col];
-      const double w = p.box / p.cells;
-      // about 12 arrows per side, however fine the grid
-      const int stride = std::max(1, p.cells / 12);
-      detail::Rows vort, dens, arrows;
-      for (int y = 0; y < p.cells; ++y)
-        for (int x = 0; x < p.cells; ++x) {
-          const auto i = static_cast<std::size_t>(y * p.cells + x);
-          const double cx = (x + 0.5) * w, cy = (y + 0.5) * w;
-          vort.push_back({cx, cy, p.vorticity[i]});
-          dens.push_back({cx, cy, p.relative_density[i]});
-          if (x % stride == 0 && y % stride == 0)
-            arrows.push_back({cx, cy, 0.9 * stride * w * p.vx[i] / scale.speed,
-                              0.9 * stride * w * p.vy[i] / scale.speed});
-        }
-      const std::string tag = std::to_string(r) + "_" + std::to_string(col);
-      script.data.emplace_back("vort" + tag, vort);
-      script.data.emplace_back("dens" + tag, dens);
-      script.data.emplace_back("arrows" + tag, arrows);
-      const std::string range = "[0:" + detail::number(p.box) + "]";
-      c += "  set xrange " + range + "\n  set yrange " + range + "\n";
-      c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
-      c += "  set cbrange [" + detail::number(-scale.vorticity[r]) + ":" +
-           detail::number(scale.vorticity[r]) + "]\n";
-      c += "  set title " + detail::quote(p.title + ": flow, vorticity") + " font ',9'\n";
-      c += "  plot $vort" + tag + " using 1:2:3 with image, $arrows" + tag +
-           " using 1:2:3:4 with vectors head size screen 0.004,25 filled lc rgb 'black'\n";
-      c += "  set palette defined (-1 '#01665e', 0 '#f5f5f5', 1 '#8c510a')\n";
-      c += "  set cbrange [" + detail::number(1.0 - scale.density[r]) + ":" +
-           detail::number(1.0 + scale.density[r]) + "]\n";
-      c += "  set title " + detail::quote(p.title + ": density / mean") + " font ',9'\n";
-      c += "  plot $dens" + tag + " using 1:2:3 with image\n";
-    }
+  const std::string layout =
+      std::to_string(animated ? 1 : rows) + "," + std::to_string(2 * columns);
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (animated || r == 0) c += "  set multiplot layout " + layout + "\n" + k_panel_settings;
+    draw_row(script, data.rows[r], std::to_string(r), scale.speed, scale.vorticity[r],
+             scale.density[r]);
+    if (animated) c += "  unset multiplot\n";
   }
-  return detail::render(script, options);
+  return script;
+}
+
+}  // namespace
+
+RenderedFigure render_flow_field(const validation::FlowFieldData& data,
+                                 const RenderOptions& options) {
+  return detail::render(flow_field_script(data, false), options);
+}
+
+RenderedFigure render_flow_field_animation(const validation::FlowFieldData& data,
+                                           const RenderOptions& options) {
+  return detail::render(flow_field_script(data, true), options);
 }
 
 }  // namespace molchaos::figures

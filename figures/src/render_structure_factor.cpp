@@ -11,11 +11,14 @@ namespace molchaos::figures {
 namespace {
 
 void linear_theory_panel(detail::FigureScript& script,
-                         const std::vector<validation::StructureFactorCurve>& curves) {
+                         const std::vector<validation::StructureFactorCurve>& curves,
+                         const std::string& title_prefix = "") {
   std::string& c = script.commands;
   c += "  set logscale y\n  set xlabel 'collisions per particle τ'\n"
        "  set ylabel 'S_{⊥}(k, τ)'\n  set key top left font font_small box opaque\n"
-       "  set title 'linear hydrodynamics (lines) against simulation (points)'\n";
+       "  set title " +
+       detail::quote(title_prefix + "linear hydrodynamics (lines) against simulation (points)") +
+       "\n";
   std::string plot = "  plot 1 with lines linecolor rgb 'black' dashtype 2 notitle";
   for (std::size_t i = 0; i < curves.size(); ++i) {
     const auto& k = curves[i];
@@ -106,6 +109,25 @@ RenderedFigure render_structure_factors(const std::vector<validation::StructureF
   gases_panel(script, gases, false);
   gases_panel(script, gases, true);
   c += "  unset multiplot\n";
+  return detail::render(script, options);
+}
+
+RenderedFigure render_linear_hydrodynamics(
+    const std::vector<validation::StructureFactorCurve>& curves, const std::string& title,
+    const std::string& basename, const RenderOptions& options) {
+  detail::require_non_empty("curves", curves.size());
+  detail::FigureScript script;
+  script.basename = basename;
+  script.description =
+      "S_perp(k, tau) of the largest shear modes in boxes above and below L_c against linear\n"
+      "hydrodynamics (no free parameter). sperp blocks: tau, S_perp (run mean), standard error,\n"
+      "linear prediction.";
+  script.canvas.png_width = 1000;
+  script.canvas.png_height = 760;
+  script.canvas.pdf_width = 5.0;
+  script.canvas.pdf_height = 3.8;
+  script.commands += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  linear_theory_panel(script, curves, title + ": ");
   return detail::render(script, options);
 }
 

@@ -24,6 +24,7 @@
 #include "molchaos/mpi/wire.hpp"
 #include "molchaos/sim/csv.hpp"
 #include "molchaos/validation/sweep_reporter.hpp"
+#include "molchaos/validation/sweep_worker.hpp"
 
 namespace molchaos::mpi {
 namespace {
@@ -116,13 +117,7 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
   WorkQueue queue;
   std::size_t to_compute = 0;
   for (std::size_t i = 0; i < total; ++i) {
-    bool cached = false;
-    try {
-      cached = validation::load_cached(runs[i], o, out[i].result);
-    } catch (const std::exception&) {
-      cached = false;  // unreadable cache folder: recompute, as the local runner would
-    }
-    if (cached) {
+    if (validation::load_cached(runs[i], o, out[i].result)) {
       out[i].ok = out[i].from_cache = true;
       reporter.done(true);
     } else {
@@ -133,16 +128,18 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
   if (to_compute == 0) return out;
   reporter.note(fmt::format("{} of {} runs to compute on {} MPI ranks", to_compute, total, ranks));
 
+  // A result the cache cannot take stops the sweep as on the local thread pool: no new runs go
+  // out, the runs in flight are received (and dropped), then the CacheWriteError is thrown.
+  validation::CacheWriteStop stop;
   std::vector<std::size_t> computed_by(static_cast<std::size_t>(ranks), 0);
   auto compute_here = [&](std::size_t i) {
-    try {
-      out[i].result = validation::run_and_cache(runs[i], o);
-      out[i].ok = true;
-    } catch (const std::exception& e) {
-      reporter.failed(i, runs[i], e.what(), out[i]);
-    }
+    if (!validation::compute_and_store(i, runs[i], o, reporter, stop, out[i])) return;
     ++computed_by[0];
     reporter.done(false);
+  };
+  auto compute_local_share = [&] {
+    for (std::optional<std::size_t> i; !stop.stopped() && (i = queue.take_local());)
+      compute_here(*i);
   };
   // Rank 0 computes too (with 2 ranks on 2 cores an idle master would waste half the machine),
   // on a second thread, which FUNNELED allows as long as that thread makes no MPI call.
@@ -150,10 +147,7 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
   MPI_Query_thread(&thread_level);
   const bool compute_thread = thread_level >= MPI_THREAD_FUNNELED;
   std::thread local;
-  if (compute_thread)
-    local = std::thread([&] {
-      while (auto i = queue.take_local()) compute_here(*i);
-    });
+  if (compute_thread) local = std::thread(compute_local_share);
 
   auto handle_result = [&](const std::string& bytes, int source) {
     ResultMessage m;
@@ -165,27 +159,32 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
     if (m.index >= total)
       abort_job(fmt::format("rank {} returned unknown run {}", source, m.index));
     const auto i = static_cast<std::size_t>(m.index);
+    if (stop.stopped()) return;
     ++computed_by[static_cast<std::size_t>(source)];
+    sim::RunResult r;
     try {
       if (!m.ok) throw std::runtime_error(m.text);
       std::istringstream text(m.text);
-      sim::RunResult r = sim::read_csv(text);
+      r = sim::read_csv(text);
       if (validation::canonical_parameters(r.parameters, "") !=
           validation::canonical_parameters(runs[i], ""))
         throw std::runtime_error(
             fmt::format("rank {} ran other parameters than were sent", source));
-      validation::store_cached(r, o);
-      out[i].result = std::move(r);
-      out[i].ok = true;
     } catch (const std::exception& e) {
       reporter.failed(i, runs[i], e.what(), out[i]);
+      reporter.done(false);
+      return;
     }
+    if (!validation::store(r, o, stop)) return;
+    out[i].result = std::move(r);
+    out[i].ok = true;
     reporter.done(false);
   };
 
   // Dispatcher: every free worker gets the next run; a result frees its worker again.
   std::size_t in_flight = 0;
   auto feed = [&](int worker) {
+    if (stop.stopped()) return;
     if (auto i = queue.take_remote()) {
       send(encode(JobMessage{*i, runs[*i]}), worker, Tag::job);
       ++in_flight;
@@ -210,7 +209,8 @@ std::vector<RunOutcome> run_sweep_distributed_with_stats(const std::vector<sim::
   if (compute_thread)
     local.join();
   else
-    while (auto i = queue.take_local()) compute_here(*i);
+    compute_local_share();
+  stop.throw_if_stopped();
 
   std::string per_rank;
   for (std::size_t n : computed_by) per_rank += fmt::format(" {}", n);

@@ -27,7 +27,7 @@ constexpr double k_bound_margin = 1.0 + 1e-12;
 }  // namespace
 
 void validate_dsmc(const Parameters& p) {
-  if (p.randomize != Randomization::none)
+  if (!method_runs_mode(Method::dsmc, p.randomize))
     throw std::invalid_argument(
         "randomize: value " + std::string(to_string(p.randomize)) +
         " is not allowed with method = dsmc (a shuffle only permutes velocities, which leaves the "

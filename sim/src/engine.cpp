@@ -79,15 +79,16 @@ constexpr double k_shell = 0.25;
 // Construction and initial state.
 
 template <int D, class Observer>
-template <class Shuffle>
-auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
-                           const Shuffle& shuffle) -> Outcome {
+template <class Shuffle, bool Prefetch>
+auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
+                                     const CollisionModel& model, const Shuffle& shuffle)
+    -> Outcome {
   const double rescale_below = k_rescale_temperature * n_ * D;  // in units of sum u^2
   for (;;) {
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
     // Likely the next event's particle: its records load while this event is processed.
-    if (const std::int32_t g = outgrows_cache_ ? calendar_.guess_next(i) : -1; g >= 0) {
+    if (const std::int32_t g = Prefetch ? calendar_.guess_next(i) : -1; g >= 0) {
       __builtin_prefetch(&part_[g]);
       __builtin_prefetch(&ev_[g]);
       calendar_.prefetch(g);
@@ -103,37 +104,59 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
     ++events_;
     if (ev_[i].cross_time < ev_[i].coll_time) {
       if (neighbour_lists_)
-        rebuild_neighbours(i);  // left its shell: new centre, new neighbour list
+        rebuild_neighbours<Prefetch>(i);  // left its shell: new centre, new neighbour list
       else
-        cross_cell(i);  // moves i to its next cell, looks at the cells that came into range
+        cross_cell<Prefetch>(i);  // moves i to its next cell, looks at the cells that came into range
     } else {
       const std::int32_t j = ev_[i].partner;
       if (part_[j].counter != ev_[i].partner_counter) {  // partner's velocity changed since: stale
-        predict(i);
+        predict<Prefetch>(i);
         continue;
       }
       const std::uint64_t before = collisions_;
-      collide(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
+      collide<Prefetch>(i, j, model, shuffle);  // rule, shuffle, re-predict every particle whose velocity changed
       if (collisions_ != before) stalled_events_ = 0;
       if (stop_) return Outcome::stopped;
       if (sum_u2_ < rescale_below || clock_.now > k_rebase_time) return Outcome::resync;
     }
-    if (debug_check_every_ != 0 && events_ % debug_check_every_ == 0) check_overlaps();
   }
 }
 
 template <int D, class Observer>
+template <class Shuffle>
+auto Engine<D, Observer>::run_events_for(double tau_stop, std::uint64_t event_limit,
+                                         const CollisionModel& model, const Shuffle& shuffle)
+    -> Outcome {
+  return outgrows_cache_ ? run_events<Shuffle, true>(tau_stop, event_limit, model, shuffle)
+                         : run_events<Shuffle, false>(tau_stop, event_limit, model, shuffle);
+}
+
+// The debug overlap check runs between event loops: the loop pauses at every multiple of
+// debug_check_every_ events (its event limit), so that it carries no test for it.
+template <int D, class Observer>
 auto Engine<D, Observer>::dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model)
     -> Outcome {
+  if (debug_check_every_ == 0) return dispatch_shuffle(tau_stop, event_limit, model);
+  for (;;) {
+    const std::uint64_t check_at = (events_ / debug_check_every_ + 1) * debug_check_every_;
+    const Outcome outcome = dispatch_shuffle(tau_stop, std::min(event_limit, check_at), model);
+    if (events_ == check_at) check_overlaps();
+    if (outcome != Outcome::paused || events_ >= event_limit) return outcome;
+  }
+}
+
+template <int D, class Observer>
+auto Engine<D, Observer>::dispatch_shuffle(double tau_stop, std::uint64_t event_limit,
+                                           const CollisionModel& model) -> Outcome {
   switch (model.shuffle) {
     case Randomization::paper:
-      return run_events(tau_stop, event_limit, model, PaperShuffle{});
+      return run_events_for(tau_stop, event_limit, model, PaperShuffle{});
     case Randomization::flux:
-      return run_events(tau_stop, event_limit, model, FluxShuffle{});
+      return run_events_for(tau_stop, event_limit, model, FluxShuffle{});
     case Randomization::none:
       break;
   }
-  return run_events(tau_stop, event_limit, model, NoShuffle{});
+  return run_events_for(tau_stop, event_limit, model, NoShuffle{});
 }
 
 template <int D, class Observer>
@@ -173,7 +196,7 @@ auto Engine<D, Observer>::step() -> Status {
 }
 
 template <int D, class Observer>
-template <class Shuffle>
+template <bool Prefetch, class Shuffle>
 void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
                         const Shuffle& shuffle) {
   advance_particle(i);
@@ -195,8 +218,8 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
     dist2 += d * d;
   }
   if (!(b < 0)) {  // not approaching after all: no collision, and pair_time() agrees
-    predict(i);
-    predict(j);
+    predict<Prefetch>(i);
+    predict<Prefetch>(j);
     return;
   }
   const double inv_dist = 1.0 / std::sqrt(dist2);
@@ -230,11 +253,11 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
         });
     ++part_[k].counter;
     ++part_[l].counter;
-    predict(k);
-    predict(l);
+    predict<Prefetch>(k);
+    predict<Prefetch>(l);
   }
-  predict(i);
-  predict(j);
+  predict<Prefetch>(i);
+  predict<Prefetch>(j);
 
   if (micro_run_ >= k_collapse_collisions) request_stop(StopReason::collapse);
   if (collision_limit_ != 0 && collisions_ >= collision_limit_)
@@ -278,20 +301,21 @@ template <int D, class Observer>
 }
 
 template <int D, class Observer>
+template <bool Prefetch>
 void Engine<D, Observer>::predict(std::int32_t i) {
   advance_particle(i);
   double best = k_inf;
   std::int32_t partner = -1;
   int x[D] = {};  // i's cell coordinates (cells only)
   if (neighbour_lists_) {
-    earliest(i, lists_.slots(i), lists_.count(i), best, partner);
+    earliest<Prefetch>(i, lists_.slots(i), lists_.count(i), best, partner);
   } else {
     coords_(part_[i].cell, x);
     int stencil[stencil_size<D>()];
     stencil_of(i, x, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
     const std::int32_t count = gather<stencil_size<D>()>(stencil);
-    earliest(i, candidates_.data(), count, best, partner);
+    earliest<Prefetch>(i, candidates_.data(), count, best, partner);
   }
   ev_[i].coll_time = best;
   ev_[i].partner = partner;
@@ -360,6 +384,7 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
 }
 
 template <int D, class Observer>
+template <bool Prefetch>
 void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
   advance_particle(i);
   for (int a = 0; a < D; ++a) {
@@ -376,7 +401,7 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
   cell_remove(i);
   file_in_cell(i, cell_of_position(part_[i].r));
   collect_neighbours(i, false);
-  predict(i);
+  predict<Prefetch>(i);
 }
 
 // After a cell crossing only the cells that came into range can hold new partners: pairs with
@@ -386,6 +411,7 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
 // the partner (whichever changed last). One function for the whole event (the hot path of dilute
 // systems: most events are crossings).
 template <int D, class Observer>
+template <bool Prefetch>
 void Engine<D, Observer>::cross_cell(std::int32_t i) {
   advance_particle(i);
   Particle& p = part_[i];
@@ -420,7 +446,7 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   double best = ev_[i].coll_time;
   std::int32_t partner = -1;
   const std::int32_t count = gather<slab_size<D>()>(slab);
-  earliest(i, candidates_.data(), count, best, partner);
+  earliest<Prefetch>(i, candidates_.data(), count, best, partner);
   // best is the old collision time unless a new partner was found (selects, no branch).
   ev_[i].coll_time = best;
   // Masks instead of selects, which the compiler turned into (mispredicted) branches.

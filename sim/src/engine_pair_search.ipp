@@ -119,12 +119,13 @@ template <int Count>
 // itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
 // the branch predictor would have to guess.
 template <int D, class Observer>
+template <bool Prefetch>
 [[gnu::always_inline]] inline void Engine<D, Observer>::earliest(std::int32_t i, std::int32_t* list,
                                                        std::int32_t count, double& best,
                                                        std::int32_t& partner) const {
   double b = best;
   std::int32_t p = partner;
-  if (outgrows_cache_)
+  if constexpr (Prefetch)
     for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&part_[list[k]]);
 #if defined(__SSE2__)
   list[count] = i;

@@ -35,6 +35,10 @@ std::optional<Randomization> parse_randomization(std::string_view text) {
   return std::nullopt;
 }
 
+bool method_runs_mode(Method method, Randomization mode) {
+  return method == Method::edmd || mode == Randomization::none;
+}
+
 double close_packing_density(int dimension) {
   // Hexagonal packing of disks, n = 2/sqrt(3); fcc packing of spheres, n = sqrt(2).
   return dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0);

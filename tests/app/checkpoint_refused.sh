@@ -6,13 +6,12 @@
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 base=(simulate --particles 400 --density 0.1 --contacts --quiet)
 args=("${base[@]}" --restitution 0.9)
 "$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
-  { echo "FAIL: run with checkpoints"; exit 1; }
+  fail "run with checkpoints"
 failures=0
 refused() {  # refused REGEX ARGS...: molchaos simulate ARGS is a usage error matching REGEX
   local regex=$1
@@ -49,6 +48,6 @@ refused "--restart.*not a molchaos checkpoint" "${args[@]}" --out b.csv --restar
 refused "--restart.*no checkpoint file 'missing'" "${args[@]}" --out b.csv --restart missing
 refused "--checkpoint-interval: needs --checkpoint FILE" \
   "${args[@]}" --out b.csv --checkpoint-interval 5
-[ ! -e b.csv ] || { echo "FAIL: an output written by a refused restart"; exit 1; }
-[ "$failures" -eq 0 ] || { echo "FAIL: $failures refusals wrong"; exit 1; }
+[ ! -e b.csv ] || fail "an output written by a refused restart"
+[ "$failures" -eq 0 ] || fail "$failures refusals wrong"
 echo "ok: every unfit checkpoint refused with a message naming what differs"

@@ -8,10 +8,8 @@
 # removes only the suite's temporaries older than an hour).
 set -u
 bin=$(realpath "$1")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-cd "$dir" || exit 1
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 
 isolate=()
 if unshare --pid --fork true 2>/dev/null; then isolate=(unshare --pid --fork); fi

@@ -6,10 +6,8 @@
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 "$bin" simulate --dim 3 --particles 500 --density 0.2 --restitution 0.85 --randomize paper \
   --contacts --seed 11 --t-end 30 --snapshot-times 1 2.5 --tc 1e-4 --samples-per-decade 7 \
   --out run.csv --write-config run.toml --quiet 2>/dev/null || fail "first run"

@@ -2,15 +2,13 @@
 # Usage: io_failures.sh MOLCHAOS
 # The I/O layer loses nothing and says so: a corrupted cache entry is reported and recomputed,
 # unwritable or special outputs are refused (exit 2, naming the flag) before any work, snapshot
-# paths stay next to --out, and a full disk (a small tmpfs, where mounting is allowed) gives exit 1
-# with no file or temporary left behind.
+# paths stay next to --out, a cache that cannot take a run stops the sweep naming the folder, and
+# a full disk (a small tmpfs, where mounting is allowed) gives exit 1 with no file or temporary
+# left behind.
 set -u
-bin=$1
-dir=$(mktemp -d)
-cleanup() { mountpoint -q "$dir/small" 2>/dev/null && umount "$dir/small"; rm -rf "$dir"; }
-trap cleanup EXIT
-fail() { echo "FAIL: $*"; exit 1; }
-cd "$dir" || exit 1
+bin=$(realpath "$1")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 
 # 1. Corrupted cache entry: one changed digit of a T value.
 args=(sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 2 --quiet --threads 1 --cache cache)
@@ -25,6 +23,21 @@ sed -i '1s/.*/# cache_key = 0000000000000000/' "$entry"
 "$bin" "${args[@]}" > third.txt 2> third.err || fail "sweep after key edit"
 grep -q "stored under key" third.err || fail "wrong key not reported"
 echo "ok: corrupted cache entries are reported and recomputed"
+
+# 7. A cache entry that cannot be put in place (its name taken by a directory; needs no mount):
+# the sweep stops, exit 1, naming the cache folder and the OS error; no run counted as failed.
+mkdir blocked
+for entry in cache/*.csv; do mkdir "blocked/$(basename "$entry")"; done
+"$bin" sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 2 --quiet --threads 1 \
+  --cache blocked --out blocked.csv > /dev/null 2> err.txt
+s=$?
+[ "$s" -eq 1 ] || fail "blocked cache entries gave status $s: $(tail -n 1 err.txt)"
+grep -Eq "^molchaos: failed: cannot store a run in the cache blocked: cannot write blocked/[0-9a-f]{16}\.csv: rename failed \(Is a directory\)$" err.txt ||
+  fail "blocked cache entries not named: $(tail -n 1 err.txt)"
+! grep -q "run(s) failed" err.txt || fail "blocked cache entries counted as failed runs"
+[ ! -e blocked.csv ] || fail "a summary was written although the cache failed"
+rm -rf blocked
+echo "ok: a cache entry that cannot be put in place stops the sweep"
 
 # 6. The cleaner removes only its own temporaries: not a user's file with ".tmp." in its name, not
 # another writer's in-progress file.
@@ -65,8 +78,7 @@ mkdir data.v2 sub
 echo "ok: snapshot paths"
 
 # 2. Full disk: exit 1, nothing half-written, no temporary left.
-mkdir small
-if mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
+if mount_small_tmpfs small 64k; then
   for n in 2000 6000; do
     "$bin" simulate --particles $n --t-end 1 --relax 1 --snapshot-times 1 --quiet --out small/run.csv > /dev/null 2> err.txt
     s=$?
@@ -80,7 +92,7 @@ if mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
   # A full cache disk: the sweep (and reproduce) stops with exit 1 naming the cache folder and
   # the reason, instead of counting runs as failed (which once surfaced in reproduce as
   # "Fig3Data.curves[0].t is empty"); no temporary left, no summary written.
-  umount small && mount -t tmpfs -o size=8k tmpfs small || fail "remount"
+  mount_small_tmpfs small 8k || fail "remount"
   "$bin" sweep --particles 200 --density 0.05 --restitution 0.9 --seeds 4 --quiet --threads 2 --cache small --out full.csv > /dev/null 2> err.txt
   s=$?
   [ "$s" -eq 1 ] || fail "full cache disk gave status $s: $(cat err.txt)"
@@ -93,6 +105,16 @@ if mount -t tmpfs -o size=64k tmpfs small 2>/dev/null; then
   grep -q "cannot store a run in the cache small: .*No space left" err.txt || fail "reproduce: full cache not named: $(tail -n 3 err.txt)"
   rm -f small/* small/.*.molchaos-tmp.* 2>/dev/null
   echo "ok: full cache disk"
+  # A full disk while figures are rendered (as at the end of reproduce): exit 1 naming the file
+  # gnuplot could not write and the space left; no temporary of the figure left behind.
+  mount_small_tmpfs small 12k || fail "remount"
+  "$bin" bench --simulation --particles 100 --work 1000 --threads 1 --out small > /dev/null 2> err.txt
+  s=$?
+  [ "$s" -eq 1 ] || fail "figures on a full disk gave status $s: $(tail -n 1 err.txt)"
+  grep -Eq "gnuplot wrote no small/work_precision_simulation\.(png|pdf) \([0-9]+ bytes free in small\)$" err.txt ||
+    fail "figures on a full disk: cause not named: $(tail -n 1 err.txt)"
+  [ -z "$(ls -A small | grep molchaos-tmp || true)" ] || fail "figure temporaries left: $(ls -A small)"
+  echo "ok: full disk while rendering figures"
 else
   echo "note: cannot mount a tmpfs here; full-disk case not run"
 fi

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <regex>
 #include <stdexcept>
@@ -150,6 +151,31 @@ val::BData synthetic_b() {
   return data;
 }
 
+val::A2Data synthetic_a2() {
+  val::A2Data data;
+  for (const double density : {0.05, 0.1}) {
+    val::A2Panel panel;
+    panel.density = density;
+    for (const char* mode : {"none", "paper", "flux", "dsmc"}) {
+      val::A2Series series{std::string("gas ") + mode, mode, {}, {}};
+      for (int i = 0; i < 10; ++i) {
+        const double eps = 0.80 + 0.02 * i;
+        series.restitution.push_back(eps);
+        series.a2.push_back({-0.1 * (1.0 - eps), 0.003});
+      }
+      panel.series.push_back(series);
+    }
+    for (int i = 0; i <= 40; ++i) {
+      const double eps = 0.80 + 0.005 * i;
+      panel.theory_restitution.push_back(eps);
+      panel.first_sonine.push_back({-0.09 * (1.0 - eps), 0.0});
+      panel.improved.push_back({-0.11 * (1.0 - eps), 1e-13});
+    }
+    data.panels.push_back(panel);
+  }
+  return data;
+}
+
 val::SnapshotData synthetic_snapshot() {
   // Particles gathered into a band along a shear flow, with two counter-rotating vortices.
   val::SnapshotData data;
@@ -251,6 +277,18 @@ BOOST_AUTO_TEST_CASE(b_renders_png_pdf_and_script) {
   check_rendered(fig::render_b(synthetic_b(), out.options()), out.path, "fig_b_of_eps");
 }
 
+BOOST_AUTO_TEST_CASE(a2_renders_png_pdf_and_script) {
+  const OutputDirectory out("a2");
+  check_rendered(fig::render_a2(synthetic_a2(), out.options()), out.path, "fig_a2_of_eps");
+  // The script carries every point and both theory lines as data blocks, so it redraws alone.
+  std::ifstream script(out.path / "fig_a2_of_eps.gp");
+  const std::string text((std::istreambuf_iterator<char>(script)), {});
+  for (const std::string block : {"$p0_s3", "$p1_s0", "$p0_theory", "$p1_theory"}) {
+    BOOST_TEST_INFO(block);
+    BOOST_TEST(text.find(block) != std::string::npos);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(snapshot_renders_png_pdf_and_script) {
   const OutputDirectory out("snapshot");
   check_rendered(fig::render_snapshot(synthetic_snapshot(), out.options()), out.path,
@@ -274,6 +312,22 @@ BOOST_AUTO_TEST_CASE(impact_parameter_renders_png_pdf_and_script) {
   check_rendered(fig::render_impact_parameter(synthetic_impact_parameter(), out.options()),
                  out.path, "fig_impact_parameter");
   check_invalid_argument([&] { fig::render_impact_parameter({}, out.options()); }, "rows");
+}
+
+BOOST_AUTO_TEST_CASE(linear_hydrodynamics_renders_png_pdf_and_script) {
+  const OutputDirectory out("linear_hydrodynamics");
+  val::StructureFactorCurve curve;
+  curve.dimension = 3;
+  curve.wavenumber = 0.26;
+  curve.box = 24;
+  curve.tau = {1, 2, 3};
+  curve.measured = {1.2, 1.5, 1.9};
+  curve.error = {0.1, 0.1, 0.2};
+  curve.predicted = {1.2, 1.6, 2.0};
+  check_rendered(fig::render_linear_hydrodynamics({curve}, "d = 3", "fig_sf3", out.options()),
+                 out.path, "fig_sf3");
+  check_invalid_argument(
+      [&] { fig::render_linear_hydrodynamics({}, "d = 3", "fig_sf3", out.options()); }, "curves");
 }
 
 BOOST_AUTO_TEST_CASE(png_only_writes_no_pdf) {
@@ -314,6 +368,18 @@ BOOST_AUTO_TEST_CASE(bad_data_throws_invalid_argument_naming_the_field) {
   auto b = synthetic_b();
   b.panels[0].series[2].b.pop_back();
   check_invalid_argument([&] { fig::render_b(b, out.options()); }, "BData.panels[0].series[2].b");
+
+  auto a2 = synthetic_a2();
+  a2.panels[1].series[3].a2.pop_back();
+  check_invalid_argument([&] { fig::render_a2(a2, out.options()); },
+                         "A2Data.panels[1].series[3].a2");
+  a2 = synthetic_a2();
+  a2.panels[0].improved.pop_back();
+  check_invalid_argument([&] { fig::render_a2(a2, out.options()); }, "A2Data.panels[0].improved");
+  a2 = synthetic_a2();
+  a2.panels[0].series.clear();
+  check_invalid_argument([&] { fig::render_a2(a2, out.options()); }, "A2Data.panels[0].series");
+  check_invalid_argument([&] { fig::render_a2(val::A2Data{}, out.options()); }, "A2Data.panels");
 
   auto snapshot = synthetic_snapshot();
   snapshot.speed.pop_back();

@@ -432,7 +432,7 @@ BOOST_AUTO_TEST_CASE(stops_and_bad_input) {
 }
 
 // The paper's state point (d = 2, n = 0.05, N = 5000; ε = 0.8, 0.9) by DSMC, analysed exactly as
-// the MD runs are (validation::analyse_run: the Haff fit over the window after 3 collisions per
+// the MD runs are (validation::analyse_run: the τ0 estimator over the window after 3 collisions per
 // particle; no break-down indicator, since there are no positions). A measurement, reported: a2,
 // A and the collision-averaged dyad <D> with standard errors over the runs, beside the theory at
 // b = 0 (a gas without velocity correlations) evaluated at the DSMC's own a2 and at the first

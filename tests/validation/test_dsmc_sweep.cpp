@@ -16,7 +16,7 @@ using namespace molchaos::validation;
 
 BOOST_AUTO_TEST_CASE(dsmc_sweep_cools_as_kinetic_theory) {
   EnsembleSpec spec;
-  spec.method = sim::Method::dsmc;
+  spec.methods = {sim::Method::dsmc};
   spec.particles = 5000;
   spec.densities = {0.1};
   spec.restitutions = {0.8};
@@ -51,7 +51,7 @@ BOOST_AUTO_TEST_CASE(flux_shuffled_md_cools_as_dsmc) {
   options.version = "test";
   auto points_of = [&](sim::Method method, sim::Randomization mode, int seeds) {
     EnsembleSpec spec;
-    spec.method = method;
+    spec.methods = {method};
     spec.particles = 2000;
     spec.densities = {0.1};
     spec.restitutions = {0.8, 0.9};
@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(flux_shuffled_md_cools_as_dsmc) {
 // three restitutions.
 BOOST_AUTO_TEST_CASE(dsmc_a2_follows_the_improved_sonine_theory) {
   EnsembleSpec spec;
-  spec.method = sim::Method::dsmc;
+  spec.methods = {sim::Method::dsmc};
   spec.particles = 5000;
   spec.densities = {0.1};
   spec.restitutions = {0.6, 0.7, 0.8};

@@ -69,3 +69,18 @@ BOOST_AUTO_TEST_CASE(fields_for_the_figure) {
   BOOST_TEST(p.vx.size() == static_cast<std::size_t>(p.cells * p.cells));
   BOOST_TEST(p.cells == s.spec.field_cells);
 }
+
+// The animation: one row per frame, evenly spaced in ln t from the homogeneous start to the last
+// field time, the original and the flux-shuffled gas side by side.
+BOOST_AUTO_TEST_CASE(frames_for_the_animation) {
+  const auto& s = study();
+  const auto times = animation_log_times(s.spec);
+  BOOST_TEST_REQUIRE(times.size() == static_cast<std::size_t>(s.spec.animation_frames));
+  BOOST_TEST(times.front() == s.spec.animation_first_log_time);
+  BOOST_TEST(times.back() == s.spec.field_log_times.back());
+  BOOST_TEST_REQUIRE(s.animation.rows.size() == times.size());
+  for (const auto& row : s.animation.rows) BOOST_TEST(row.size() == 2u);
+  BOOST_TEST(s.animation.column_titles.size() == 2u);
+  // the last frame is the still figure's last row, same run, same snapshot
+  BOOST_TEST(s.animation.rows.back()[0].vorticity == s.fields.rows.back()[0].vorticity);
+}

@@ -12,7 +12,10 @@
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/estimator_study.hpp"
+#include "molchaos/validation/haff_fit.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/sweep.hpp"
 
 using namespace molchaos;
@@ -64,6 +67,68 @@ BOOST_AUTO_TEST_CASE(haff_fit_refuses_too_few_points_and_heating) {
   auto heating = samples;
   for (auto& s : heating) s.temperature = 1.0 + s.t;
   BOOST_TEST(!fit_haff(heating, 1.0, 100.0).ok);
+}
+
+// Every τ0 estimator is exact on a Haff series, at any T0 (τ0 referred to T0 = 1 is √T0·τ0),
+// also when the series stays flat between two samples (a stretch without collisions).
+BOOST_AUTO_TEST_CASE(haff_estimators_exact_on_haff_series) {
+  auto samples = haff_samples(0.97, 123.4, 1000.0, 60);
+  for (HaffEstimator e : k_haff_estimators) {
+    const Tau0Estimate r = estimate_tau0(e, samples, 1.0, 1000.0);
+    BOOST_TEST_REQUIRE(r.ok, to_string(e));
+    BOOST_TEST(std::abs(r.tau0_unit / (123.4 * std::sqrt(0.97)) - 1.0) <= 1e-9, to_string(e));
+  }
+  // The integrated form weighs each stretch by its √T dt: a flat stretch of the series (T held
+  // at its value) raises the integral by exactly √T·Δt.
+  const std::size_t k = 40;
+  samples.insert(samples.begin() + k + 1, samples[k]);
+  const double dt = 0.5 * (samples[k + 2].t - samples[k].t);
+  for (std::size_t i = k + 1; i < samples.size(); ++i) samples[i].t += dt;
+  const Tau0Estimate flat =
+      estimate_tau0(HaffEstimator::integrated, samples, 1.0, samples.back().t);
+  BOOST_TEST_REQUIRE(flat.ok);
+  const double log_ratio = 0.5 * std::log(samples.front().temperature / samples.back().temperature);
+  const double expected =
+      123.4 * std::sqrt(0.97) + std::sqrt(samples[k].temperature) * dt / log_ratio;
+  BOOST_TEST(std::abs(flat.tau0_unit / expected - 1.0) <= 1e-9);
+}
+
+// The estimator comparison on synthetic runs: an estimator that reads every run 1 % high has
+// shift +1 % with no error and the same cost; one with twice the spread costs four times as
+// many runs. Correlation over seeds: +1 for the same values, −1 for mirrored ones, and only
+// seeds both gases have count.
+BOOST_AUTO_TEST_CASE(estimator_comparison_and_seed_correlation) {
+  PointSummary p, q, mirrored;
+  const double values[] = {20.0, 21.0, 19.5, 20.5, 22.0};
+  for (std::size_t k = 0; k < std::size(values); ++k) {
+    const double v = values[k], spread = v - 20.6;
+    p.A_by_estimator.push_back({v, v * 1.01, 20.6 + 2.0 * spread, v});
+    p.A_by_seed.emplace_back(k, v);
+    q.A_by_seed.emplace_back(k, 3.0 * v + 1.0);
+    mirrored.A_by_seed.emplace_back(k, -v);
+  }
+  q.A_by_seed.emplace_back(99, 1e6);  // a seed p lacks: ignored
+  const auto rows = compare_estimator_scatter({&p});
+  BOOST_TEST_REQUIRE(rows.size() == k_haff_estimators.size());
+  BOOST_TEST(rows[1].shift_from_least_squares.value == 0.01, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[1].shift_from_least_squares.error <= 1e-15);
+  BOOST_TEST(rows[1].cost_ratio == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[2].cost_ratio == 4.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(rows[0].degrees_of_freedom == 4);
+  BOOST_TEST(seed_correlation({&p}, {&q}).value == 1.0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(seed_correlation({&p}, {&mirrored}).value == -1.0,
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(seed_correlation({&p}, {&q}).error == 0.5, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(haff_estimators_refuse_heating_and_short_windows) {
+  const auto samples = haff_samples(1.0, 10.0, 100.0, 60);
+  auto heating = samples;
+  for (auto& s : heating) s.temperature = 1.0 + s.t;
+  for (HaffEstimator e : k_haff_estimators) {
+    BOOST_TEST(!estimate_tau0(e, samples, 50.0, 51.0).ok, to_string(e));
+    BOOST_TEST(!estimate_tau0(e, heating, 1.0, 100.0).ok, to_string(e));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(window_rule) {
@@ -165,6 +230,39 @@ BOOST_AUTO_TEST_CASE(sweep_spec_validation) {
   BOOST_CHECK_THROW(validate(s), std::invalid_argument);
 }
 
+// Two methods at the same state points: each runs the listed modes it can (DSMC only none), in
+// the listed order, with the same seeds; a mode or a method left without runs is refused.
+BOOST_AUTO_TEST_CASE(sweep_over_methods_pairs_each_with_the_modes_it_runs) {
+  using sim::Method;
+  using sim::Randomization;
+  EnsembleSpec s;
+  s.particles = 200;
+  s.restitutions = {0.8, 0.9};
+  s.seeds = 2;
+  s.methods = {Method::edmd, Method::dsmc};
+  s.modes = {Randomization::none, Randomization::paper, Randomization::flux};
+  const auto kinds = run_kinds(s);
+  BOOST_TEST_REQUIRE(kinds.size() == 4u);
+  BOOST_TEST((kinds[3].method == Method::dsmc && kinds[3].mode == Randomization::none));
+  const auto runs = expand(s);
+  BOOST_TEST_REQUIRE(runs.size() == 2u * 4u * 2u);
+  for (std::size_t k = 0; k < 4; ++k) {  // the first state point: kinds × seeds
+    BOOST_TEST((runs[2 * k].method == kinds[k].method));
+    BOOST_TEST((runs[2 * k].randomize == kinds[k].mode));
+    BOOST_TEST(runs[2 * k + 1].seed == runs[1].seed);
+  }
+  BOOST_CHECK_NO_THROW(validate(s));
+  s.methods = {Method::dsmc};
+  BOOST_CHECK_EXCEPTION(validate(s), std::invalid_argument, [](const auto& e) {
+    return std::string(e.what()).starts_with("modes: value paper");
+  });
+  s.methods = {Method::edmd, Method::dsmc};
+  s.modes = {Randomization::flux};
+  BOOST_CHECK_EXCEPTION(validate(s), std::invalid_argument, [](const auto& e) {
+    return std::string(e.what()).starts_with("methods: value dsmc");
+  });
+}
+
 // A point where no run succeeded has no A: nan (printed as such in every table), not 0.
 BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   const PointSummary s = summarize_point({}, WindowRule{});
@@ -173,4 +271,18 @@ BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   BOOST_TEST(std::isnan(s.A.error));
   BOOST_TEST(std::isnan(s.a2.value));
   BOOST_TEST(std::isnan(s.mean_dyad.value));
+}
+
+// The report page embeds an animation as a GIF data URI and a still figure as a PNG one.
+BOOST_AUTO_TEST_CASE(report_html_embeds_gif_and_png_by_type) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "molchaos_report_html_types";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.gif", std::ios::binary) << "GIF89a";
+  std::ofstream(dir / "b.png", std::ios::binary) << "\x89PNG";
+  const std::string html =
+      report_html("# r\n\n![a.gif](a.gif)\n\n![b.png](b.png)\n", dir.string());
+  BOOST_TEST(html.find("data:image/gif;base64," + base64("GIF89a")) != std::string::npos);
+  BOOST_TEST(html.find("data:image/png;base64," + base64("\x89PNG")) != std::string::npos);
+  fs::remove_all(dir);
 }

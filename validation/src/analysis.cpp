@@ -19,12 +19,12 @@ RunAnalysis analyse_run(const sim::RunResult& run, const WindowRule& rule) {
     a.message = a.window.message;
     return a;
   }
-  a.fit = fit_haff(run.samples, a.window.t_start, a.window.t_stop);
-  if (!a.fit.ok) {
-    a.message = a.fit.message;
+  a.tau0 = estimate_tau0(k_haff_estimator, run.samples, a.window.t_start, a.window.t_stop);
+  if (!a.tau0.ok) {
+    a.message = a.tau0.message;
     return a;
   }
-  a.A = a.fit.tau0_unit * (1.0 - p.restitution * p.restitution);
+  a.A = a.tau0.tau0_unit * (1.0 - p.restitution * p.restitution);
   double dyad_sum = 0.0, a2_sum = 0.0;
   std::uint64_t count = 0;
   int a2_samples = 0;
@@ -119,6 +119,13 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
     ++s.runs;
     A.push_back(a.A);
     s.A_by_seed.emplace_back(p.seed, a.A);
+    auto& by_estimator = s.A_by_estimator.emplace_back();
+    for (std::size_t e = 0; e < k_haff_estimators.size(); ++e) {
+      const Tau0Estimate t =
+          estimate_tau0(k_haff_estimators[e], r->samples, a.window.t_start, a.window.t_stop);
+      by_estimator[e] = t.ok ? t.tau0_unit * (1.0 - p.restitution * p.restitution)
+                             : std::numeric_limits<double>::quiet_NaN();
+    }
     a2.push_back(a.a2);
     if (a.window_collisions > 0) dyad.push_back(a.mean_dyad);
     if (a.window.breakdown.detected) {

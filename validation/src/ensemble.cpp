@@ -2,7 +2,9 @@
 #include "molchaos/validation/ensemble.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,22 @@ void validate(const EnsembleSpec& s) {
   if (s.densities.empty()) throw std::invalid_argument("densities: at least one is required");
   if (s.restitutions.empty()) throw std::invalid_argument("restitutions: at least one is required");
   if (s.modes.empty()) throw std::invalid_argument("modes: at least one is required");
+  if (s.methods.empty()) throw std::invalid_argument("methods: at least one is required");
+  const auto kinds = run_kinds(s);
+  for (auto mode : s.modes)
+    if (std::none_of(kinds.begin(), kinds.end(), [&](const RunKind& k) { return k.mode == mode; }))
+      throw std::invalid_argument(fmt::format(
+          "modes: value {} is run by none of the listed methods (method = dsmc runs mode none "
+          "only: a shuffle only permutes velocities, which leaves the DSMC state unchanged); "
+          "allowed with method = dsmc alone: none",
+          sim::to_string(mode)));
+  for (auto method : s.methods)
+    if (std::none_of(kinds.begin(), kinds.end(),
+                     [&](const RunKind& k) { return k.method == method; }))
+      throw std::invalid_argument(
+          fmt::format("methods: value {} runs mode none only, which is not among the listed modes; "
+                      "add none to them",
+                      method_name(method)));
   if (s.seeds < 1 || s.seeds > 100000)
     throw std::invalid_argument("seeds: value " + std::to_string(s.seeds) +
                                 " is outside the allowed range [1, 100000]");
@@ -39,6 +57,18 @@ double theory_tau0(int dimension, double density, double restitution) {
   return theory::predict_cooling(in).tau0.value;
 }
 
+std::string method_name(sim::Method method) {
+  return std::string(sim::find_parameter("method")->choices[static_cast<std::size_t>(method)]);
+}
+
+std::vector<RunKind> run_kinds(const EnsembleSpec& spec) {
+  std::vector<RunKind> kinds;
+  for (auto method : spec.methods)
+    for (auto mode : spec.modes)
+      if (sim::method_runs_mode(method, mode)) kinds.push_back({method, mode});
+  return kinds;
+}
+
 std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
   std::vector<sim::Parameters> runs;
   for (double n : s.densities)
@@ -47,20 +77,20 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
                            : s.t_end_fixed > 0.0
                                ? s.t_end_fixed
                                : s.t_end_in_tau0 * theory_tau0(s.dimension, n, eps);
-      for (auto mode : s.modes)
+      for (const RunKind& kind : run_kinds(s))
         for (int i = 0; i < s.seeds; ++i) {
           sim::Parameters p;
           p.dimension = s.dimension;
           p.particles = s.particles;
           p.density = n;
           p.restitution = eps;
-          p.randomize = mode;
+          p.randomize = kind.mode;
           p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
           p.t_end = t_end;
           p.relax_collisions_per_particle = s.relax_collisions_per_particle;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
-          p.method = s.method;
+          p.method = kind.method;
           runs.push_back(p);
         }
     }
@@ -73,7 +103,7 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
   std::size_t k = 0;
   for (double n : spec.densities)
     for (double eps : spec.restitutions)
-      for (auto mode : spec.modes) {
+      for (const RunKind& kind : run_kinds(spec)) {
         std::vector<const sim::RunResult*> group;
         std::vector<double> ratios;
         int failed_runs = 0;
@@ -107,7 +137,8 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         r.summary.dimension = spec.dimension;
         r.summary.density = n;
         r.summary.restitution = eps;
-        r.summary.mode = std::string(sim::to_string(mode));
+        r.method = kind.method;
+        r.summary.mode = std::string(sim::to_string(kind.mode));
         r.summary.failed += failed_runs;
         for (auto& e : errors) r.summary.messages.push_back(e);
         points.push_back(std::move(r));
@@ -125,24 +156,26 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
                        s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
-    // Like a run's header: the method line only when it is not the default (edmd).
-    sim::Parameters run;
-    run.method = s.method;
-    const sim::ParameterInfo& method = *sim::find_parameter("method");
-    if (!sim::omitted(run, method)) out << "# method = " << sim::format_value(run, method) << "\n";
+    // Like a run's header: the method line only when it is not the default (edmd alone); a
+    // list space separated, as --config reads it.
+    if (s.methods != std::vector<sim::Method>{sim::Method::edmd}) {
+      std::vector<std::string> names;
+      for (auto m : s.methods) names.push_back(method_name(m));
+      out << "# method = " << fmt::format("{}", fmt::join(names, " ")) << "\n";
+    }
     out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
            "succeeded (runs = 0, failed = their number)\n";
-    out << "density,restitution,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
+    out << "density,restitution,method,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";
     for (const auto& p : points) {
       const auto& m = p.summary;
       out << fmt::format(
-          "{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},{:."
-          "3g},{:.8g},{:.3g}\n",
-          m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs, m.failed,
-          p.A_theory.value, p.A_theory.error, m.mean_dyad.value, m.mean_dyad.error, m.a2.value,
-          m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
+          "{},{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},"
+          "{:.3g},{:.8g},{:.3g}\n",
+          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, m.A.error, m.runs,
+          m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value, m.mean_dyad.error,
+          m.a2.value, m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
           p.collision_ratio.value, p.collision_ratio.error);
     }
   });

@@ -89,11 +89,37 @@ std::string gas_title(const std::string& mode) {
 
 }  // namespace
 
+std::vector<double> animation_log_times(const GasFieldSpec& spec) {
+  std::vector<double> out;
+  if (spec.animation_frames < 1 || spec.field_log_times.empty()) return out;
+  const double first = spec.animation_first_log_time, last = spec.field_log_times.back();
+  if (spec.animation_frames == 1) return {last};
+  for (int i = 0; i < spec.animation_frames; ++i)
+    out.push_back(first + (last - first) * i / (spec.animation_frames - 1));
+  return out;
+}
+
+namespace {
+
+// Appends to `rows[i]` the long-wave panel of the snapshot taken at ln t = log_times[i], if any.
+void add_panels(const sim::Snapshot& snap, const GasFieldSpec& spec, const std::string& mode,
+                const std::vector<double>& log_times, FlowFieldData& data) {
+  for (std::size_t i = 0; i < log_times.size(); ++i)
+    if (std::abs(snap.t - std::exp(log_times[i])) <= 1e-9 * snap.t)
+      data.rows[i].push_back(
+          long_wave_panel(snap, spec.field_cells, spec.field_max_norm2,
+                          fmt::format("{}, ln t = {:.3g}", gas_title(mode), log_times[i])));
+}
+
+}  // namespace
+
 GasFieldStudy gas_field_study(const GasFieldSpec& spec) {
   if (spec.runs < 2) throw std::invalid_argument("runs: need at least 2 for an error bar");
   GasFieldStudy study;
   study.spec = spec;
   study.fields.rows.resize(spec.field_log_times.size());
+  const std::vector<double> frames = animation_log_times(spec);
+  study.animation.rows.resize(frames.size());
   for (const auto& mode_name : spec.modes) {
     const auto mode = sim::parse_randomization(mode_name);
     if (!mode) throw std::invalid_argument("modes: unknown randomization " + mode_name);
@@ -101,6 +127,8 @@ GasFieldStudy gas_field_study(const GasFieldSpec& spec) {
     std::vector<std::vector<SnapshotValues>> values(spec.log_times.size());
     GasFieldSeries series;
     series.mode = mode_name;
+    const bool animated = std::find(spec.animation_modes.begin(), spec.animation_modes.end(),
+                                    mode_name) != spec.animation_modes.end();
     for (int r = 0; r < spec.runs; ++r) {
       sim::Parameters p;
       p.dimension = 2;
@@ -113,6 +141,9 @@ GasFieldStudy gas_field_study(const GasFieldSpec& spec) {
       for (double l : spec.log_times) p.snapshot_times.push_back(std::exp(l));
       if (r == 0)
         for (double l : spec.field_log_times) p.snapshot_times.push_back(std::exp(l));
+      // Snapshots only read the state: the run's trajectory stays the same bytes with them.
+      if (r == 0 && animated)
+        for (double l : frames) p.snapshot_times.push_back(std::exp(l));
       std::sort(p.snapshot_times.begin(), p.snapshot_times.end());
       p.snapshot_times.erase(std::unique(p.snapshot_times.begin(), p.snapshot_times.end()),
                              p.snapshot_times.end());
@@ -124,14 +155,12 @@ GasFieldStudy gas_field_study(const GasFieldSpec& spec) {
           if (std::abs(snap.t - std::exp(spec.log_times[i])) <= 1e-9 * snap.t)
             values[i].push_back(measure(snap, result.samples, spec, study.wavenumbers));
         if (r != 0) continue;
-        for (std::size_t i = 0; i < spec.field_log_times.size(); ++i)
-          if (std::abs(snap.t - std::exp(spec.field_log_times[i])) <= 1e-9 * snap.t)
-            study.fields.rows[i].push_back(long_wave_panel(
-                snap, spec.field_cells, spec.field_max_norm2,
-                fmt::format("{}, ln t = {:g}", gas_title(mode_name), spec.field_log_times[i])));
+        add_panels(snap, spec, mode_name, spec.field_log_times, study.fields);
+        if (animated) add_panels(snap, spec, mode_name, frames, study.animation);
       }
     }
     study.fields.column_titles.push_back(gas_title(mode_name));
+    if (animated) study.animation.column_titles.push_back(gas_title(mode_name));
     for (std::size_t i = 0; i < spec.log_times.size(); ++i) {
       if (values[i].size() != static_cast<std::size_t>(spec.runs))
         throw std::runtime_error("gas_field_study: a run ended before its snapshot times");

@@ -1,17 +1,21 @@
-// REPORT.md and the Fig. 4 CSV. The report leads with its findings (one line per claim), then
-// the figures with their captions, then every comparison row and the tables behind the figures.
+// REPORT.md and the CSVs of Fig. 4 and of a2(ε). The report leads with its findings (one line per
+// claim), then the figures with their captions, then every comparison row and the tables behind the
+// figures.
 #include "molchaos/validation/report.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/theory/hydrodynamics.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/validation/verdict.hpp"
+#include "reproduce_steps.hpp"
 
 namespace molchaos::validation {
 
@@ -37,7 +41,18 @@ std::string header_lines(const ReproduceResults& r) {
       "{}\n",
       c.window.start_collisions_per_particle, c.window.density_mode_threshold,
       c.window.velocity_mode_threshold);
+  s += fmt::format("# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none)\n",
+                   r.dsmc_spec.seeds);
   return s;
+}
+
+// Every point of Fig. 4 with the name of its gas: the MD modes, then DSMC ("dsmc", molecular
+// chaos by construction).
+std::vector<std::pair<const PointResult*, std::string>> fig4_rows(const ReproduceResults& r) {
+  std::vector<std::pair<const PointResult*, std::string>> rows;
+  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
+  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
+  return rows;
 }
 
 std::string fmt_measurement(const std::optional<Measurement>& m) {
@@ -52,12 +67,36 @@ std::string fig4_csv(const ReproduceResults& r) {
   std::string s = header_lines(r);
   s += "density,restitution,randomize,A,A_err,runs,A_theory,A_theory_err,a2,a2_err,mean_dyad,mean_"
        "dyad_err,breakdowns\n";
-  for (const auto& p : r.fig4_points) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
+    const PointResult& p = *point;
     const auto& m = p.summary;
     s += fmt::format("{},{},{},{:.10g},{:.4g},{},{:.10g},{:.3g},{:.6g},{:.3g},{:.8g},{:.3g},{}\n",
-                     m.density, m.restitution, m.mode, m.A.value, m.A.error, m.runs,
-                     p.A_theory.value, p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value,
-                     m.mean_dyad.error, m.breakdowns);
+                     m.density, m.restitution, mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
+                     p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value, m.mean_dyad.error,
+                     m.breakdowns);
+  }
+  return s;
+}
+
+std::string a2_csv(const ReproduceResults& r) {
+  std::string s = header_lines(r);
+  s += "# a2 of a gas (source none, paper, flux: MD; dsmc): mean ± standard error over runs of "
+       "each run's a2 averaged over its Haff-fit window; first_sonine (eq. a2linD) and a2_a3 "
+       "(with a2^2 and a3): the Sonine theory, a2_err its quadrature error\n";
+  s += "dimension,density,restitution,source,a2,a2_err\n";
+  const int d = r.a2.dimension;
+  for (const auto& panel : r.a2.panels) {
+    for (const auto& series : panel.series)
+      for (std::size_t i = 0; i < series.a2.size(); ++i)
+        s += fmt::format("{},{},{},{},{:.6g},{:.3g}\n", d, panel.density, series.restitution[i],
+                         series.mode, series.a2[i].value, series.a2[i].error);
+    for (std::size_t i = 0; i < panel.theory_restitution.size(); ++i) {
+      const double e = panel.theory_restitution[i];
+      s += fmt::format("{},{},{:.3f},first_sonine,{:.10g},{:.3g}\n", d, panel.density, e,
+                       panel.first_sonine[i].value, panel.first_sonine[i].error);
+      s += fmt::format("{},{},{:.3f},a2_a3,{:.10g},{:.3g}\n", d, panel.density, e,
+                       panel.improved[i].value, panel.improved[i].error);
+    }
   }
   return s;
 }
@@ -100,12 +139,15 @@ std::string setup_section(const ReproduceResults& r, const std::string& command)
        "its quadrature error estimate.\n\n";
   s += fmt::format(
       "d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density; a point whose A "
-      "had a relative standard error above {:.2f} % got more seeds, see the runs column), runs "
-      "of {} kinetic-theory τ0. Modes: `none` (original gas), `paper` (the paper's shuffle), "
-      "`flux` (flux-weighted shuffle).\n\n",
+      "(the same {} relaxed initial states for every ε and mode at one density; a point and mode "
+      "whose A had a relative standard error above {:.2f} % got more seeds, in stages, see the "
+      "runs column: the largest left is {:.3f} %), runs of {} kinetic-theory τ0; A from the "
+      "integrated form of Haff's law over each run's window (the estimator finding below). "
+      "Modes: `none` (original gas), `paper` (the paper's shuffle), `flux` (flux-weighted "
+      "shuffle).\n\n",
       c.particles, fmt::join(c.densities, ", "), c.restitutions.front(), c.restitutions.back(),
-      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error, c.t_end_in_tau0);
+      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error,
+      100.0 * steps::largest_relative_error_of_A(r), c.t_end_in_tau0);
   if (r.failed_runs > 0) {
     s += fmt::format("**{} run(s) failed**:\n\n", r.failed_runs);
     for (const auto& f : r.failures) s += "- " + f + "\n";
@@ -136,11 +178,7 @@ std::string fig4_tables(const ReproduceResults& r) {
       "a2 (theory) is the first-Sonine a2(ε) (van Noije & Ernst), which that A uses.\n\n| n | ε "
       "| mode | A (sim) | runs | A (theory, b = 0) | diff [SE] | a2 (sim) | a2 (theory) "
       "|\n|---|---|---|---|---|---|---|---|---|\n";
-  // The MD modes, then DSMC (mode "dsmc", molecular chaos by construction).
-  std::vector<std::pair<const PointResult*, std::string>> rows;
-  for (const auto& p : r.fig4_points) rows.emplace_back(&p, p.summary.mode);
-  for (const auto& p : r.dsmc_points) rows.emplace_back(&p, "dsmc");
-  for (const auto& [point, mode] : rows) {
+  for (const auto& [point, mode] : fig4_rows(r)) {
     const PointResult& p = *point;
     const auto& m = p.summary;
     const double se = std::hypot(m.A.error, p.A_theory.error);
@@ -231,6 +269,13 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
            "curve per ε (filled, solid: original gas; open, dashed: flux-shuffled gas), one "
            "panel per dimension and density. Molecular chaos makes every bin zero; look at the "
            "last bin (grazing collisions) of the original gas against the flux gas.";
+  if (file.starts_with("fig_a2_of_eps"))
+    return "a2(ε), the second Sonine coefficient, one panel per density: the original, the "
+           "paper-shuffled, the flux-shuffled and the DSMC gas (mean ± standard error over runs "
+           "of the a2 averaged over the Haff-fit window), the first-Sonine a2 the paper quotes "
+           "(eq. a2linD, dashed) and the improved a2 with a2² and a3 (solid). Look at which line "
+           "the DSMC circles follow where the two lines part (small ε), and whether the MD gases' "
+           "a2 lies on the DSMC gas's.";
   if (file.starts_with("fig_snapshot"))
     return fmt::format(
         "Snapshot of the original gas at the end of Fig. 3's runs (after the clustering onset), "
@@ -238,8 +283,57 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
         "coarse-grained velocity field. Look at whether the density is still uniform and "
         "whether neighbouring arrows align (clusters and vortices).",
         c.fig3_restitution, c.fig3_density);
+  if (file.starts_with("fig_flow_field"))
+    return fmt::format(
+        "Flow and density fields of the original gas and the randomized gases (ε = {}, n = {}, "
+        "N = {}), built from the Fourier modes |m|² ≤ {} of one run each: the mean velocity as "
+        "arrows over its vorticity (colour), and the density over its mean. Look for the vortices "
+        "that grow first in the original gas and the density clusters that follow, and for any "
+        "structure in the shuffled gases.",
+        r.gas_fields.spec.restitution, r.gas_fields.spec.density, r.gas_fields.spec.particles,
+        r.gas_fields.spec.field_max_norm2);
+  if (file.starts_with("fig_structure_factor_3d")) {
+    const auto spec = BreakdownSpec::three_dimensional();
+    const auto hydro = theory::transport_coefficients({3, spec.density, spec.restitution, {}});
+    const auto paper_like =
+        theory::transport_coefficients({3, c.fig3_density, c.fig3_restitution, {}});
+    const double paper_box = theory::critical_box_size(paper_like);
+    return fmt::format(
+        "Linear hydrodynamics in d = 3 (ε = {}, n = {}): S⊥(k, τ) of the largest shear modes, "
+        "run mean ± standard error over {} runs (points), against the prediction with no free "
+        "parameter (lines), in a box of N = {} above L_c and one of N = {} below it. The state "
+        "point is the theory's choice: there L_c = 2π/k⊥ = {:.1f}σ and the heat mode's 2π/k∥ = "
+        "{:.1f}σ (`molchaos theory --dim 3 --restitution {} --density {} --particles {}`), so the "
+        "large box ({:.1f}σ) has only growing shear modes and the small one ({:.1f}σ) none; at "
+        "the paper's ε = {}, n = {}, L_c = {:.0f}σ, and a box above it holds more than {:.0f} "
+        "spheres. Look "
+        "at the growth in the large box and the saturation below L_c.",
+        spec.restitution, spec.density, spec.runs, spec.unstable_particles, spec.stable_particles,
+        theory::critical_box_size(hydro), 2 * M_PI / theory::critical_heat_wavenumber(hydro),
+        spec.restitution, spec.density, spec.unstable_particles,
+        std::cbrt(static_cast<double>(spec.unstable_particles) / spec.density),
+        std::cbrt(static_cast<double>(spec.stable_particles) / spec.density), c.fig3_restitution,
+        c.fig3_density, paper_box, c.fig3_density * paper_box * paper_box * paper_box);
+  }
   return "";
 }
+
+namespace {
+
+// The flow-field animation beside the still figure, or why there is none.
+std::string animation_line(const ReproduceResults& r, const std::vector<std::string>& figures) {
+  if (std::find(figures.begin(), figures.end(), "fig_flow_field.gif") == figures.end())
+    return "Animation: not made, gnuplot on this machine has no gif terminal.\n\n";
+  const auto& frames = r.gas_fields.animation.rows;
+  return fmt::format(
+      "Animation of the same fields, original gas beside the flux-shuffled gas, {} frames from "
+      "ln t = {:.3g} to {:.3g} (the first run of each gas):\n\n"
+      "![fig_flow_field.gif](fig_flow_field.gif)\n\n",
+      frames.size(), frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).front(),
+      frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).back());
+}
+
+}  // namespace
 
 std::string report_markdown(const ReproduceResults& r, const std::vector<std::string>& figures,
                             const std::string& command) {
@@ -250,9 +344,11 @@ std::string report_markdown(const ReproduceResults& r, const std::vector<std::st
   s += setup_section(r, command);
   s += "## Figures\n\n";
   for (const auto& f : figures) {
+    if (f.ends_with(".gif")) continue;  // linked beside its still figure
     s += fmt::format("![{}]({})\n\n", f, f);
     const std::string caption = figure_caption(f, r);
     if (!caption.empty()) s += "*" + caption + "*\n\n";
+    if (f == "fig_flow_field.png") s += animation_line(r, figures);
   }
   s += verdict_table(r);
   s += fig4_tables(r);

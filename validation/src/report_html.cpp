@@ -126,7 +126,8 @@ std::string image_html(const std::string& line, const std::string& directory) {
   if (!in) throw std::runtime_error("report_html: cannot read figure " + path.string());
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  return "<figure><img alt=\"" + escape(alt) + "\" src=\"data:image/png;base64," +
+  const std::string type = file.ends_with(".gif") ? "gif" : "png";
+  return "<figure><img alt=\"" + escape(alt) + "\" src=\"data:image/" + type + ";base64," +
          base64(bytes.str()) + "\"></figure>\n";
 }
 

@@ -77,8 +77,8 @@ using FigureStep = void (*)(ReproduceResults&);
 using ClaimStep = Claim (*)(const ReproduceResults&);
 
 // Figures first: several claims read their data (fits, b(ε), the onset).
-constexpr FigureStep k_figures[] = {steps::figure_fig4, steps::figure_b, steps::figure_fig3,
-                                    steps::figure_snapshot};
+constexpr FigureStep k_figures[] = {steps::figure_fig4, steps::figure_b, steps::figure_a2,
+                                    steps::figure_fig3, steps::figure_snapshot};
 
 // The report's summary lists the claims in this order.
 constexpr ClaimStep k_claims[] = {
@@ -103,8 +103,10 @@ constexpr ClaimStep k_claims[] = {
     steps::finding_higher_order_coefficients,
     steps::finding_two_particle_distribution,
     steps::finding_breakdown_prediction,
+    steps::finding_breakdown_prediction_3d,
     steps::finding_onset_from_linear_theory,
     steps::finding_flow_energy_share,
+    steps::finding_estimator_precision,
 };
 
 void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcomes) {
@@ -115,44 +117,47 @@ void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcome
     }
 }
 
-// Second stage: a state point whose A has a relative standard error above the target gets more
-// seeds (all modes, so that paired comparisons stay paired), sized from the first stage's scatter:
-// n_needed = n·(SE/target)², with 20 % margin, capped. Seeds 0..n−1 come from the cache.
-void add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
+// Further stages: a (state point, mode) whose A has a relative standard error above the target
+// gets more seeds, sized from the scatter so far: n_needed = n·(SE/target)² with 10 % margin,
+// at most k_seed_growth times the runs so far (a scatter from few runs is itself uncertain by
+// ~1/√(2n): growing in steps keeps a low first estimate from costing a large overshoot) and at
+// most max_seeds. Seeds 0..n−1 come from the cache; up to k_seed_stages stages are run. Modes are
+// sized apart: A of two modes started from the same relaxed state correlate weakly over seeds
+// (r ≈ 0.2 for the original and the flux gas, measured in the precision finding), so pairing
+// would shrink the variance of their difference by that fraction at most, while equal seeds
+// would give every mode the seeds of its noisiest one. Returns whether any point got seeds.
+constexpr int k_seed_stages = 4;
+constexpr int k_seed_growth = 4;
+
+bool add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
                             const SweepOptions& sweep) {
-  if (cfg.target_relative_error <= 0.0) return;
+  if (cfg.target_relative_error <= 0.0) return false;
   std::vector<EnsembleSpec> specs;
   for (const auto& p : R.fig4_points) {
     const auto& s = p.summary;
     if (s.runs < 2 || s.A.value <= 0.0) continue;
     const double rel = s.A.error / s.A.value;
     if (rel <= cfg.target_relative_error) continue;
-    const int needed =
-        std::min(cfg.max_seeds,
-                 static_cast<int>(std::ceil(1.2 * cfg.seeds * (rel / cfg.target_relative_error) *
-                                            (rel / cfg.target_relative_error))));
-    bool merged = false;
-    for (auto& spec : specs)
-      if (spec.densities.front() == s.density && spec.restitutions.front() == s.restitution) {
-        spec.seeds = std::max(spec.seeds, needed);
-        merged = true;
-      }
-    if (!merged && needed > cfg.seeds) {
-      EnsembleSpec spec = R.fig4_spec;
-      spec.densities = {s.density};
-      spec.restitutions = {s.restitution};
-      spec.seeds = needed;
-      specs.push_back(spec);
-    }
+    const double ratio = rel / cfg.target_relative_error;
+    const int seeds = s.runs + s.failed;
+    const int needed = std::min({cfg.max_seeds, k_seed_growth * seeds,
+                                 static_cast<int>(std::ceil(1.1 * seeds * ratio * ratio))});
+    if (needed <= seeds) continue;
+    EnsembleSpec spec = R.fig4_spec;
+    spec.densities = {s.density};
+    spec.restitutions = {s.restitution};
+    spec.modes = {*sim::parse_randomization(s.mode)};
+    spec.seeds = needed;
+    specs.push_back(spec);
   }
-  if (specs.empty()) return;
+  if (specs.empty()) return false;
   std::vector<sim::Parameters> runs;
   for (const auto& spec : specs) {
     const auto r = expand(spec);
     runs.insert(runs.end(), r.begin(), r.end());
   }
   SweepOptions second = sweep;
-  second.label = sweep.label + ", extra seeds";
+  second.label = sweep.label + ", more seeds where SE(A)/A is above the target";
   const auto outcomes = run_sweep(runs, second);
   std::size_t offset = 0;
   for (const auto& spec : specs) {
@@ -169,6 +174,7 @@ void add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
             p.summary.mode == fresh.summary.mode)
           p = std::move(fresh);
   }
+  return true;
 }
 
 void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
@@ -195,7 +201,7 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   // DSMC runs cost milliseconds: several times the MD's seeds buy error bars several times
   // smaller, so that a difference between the flux gas and DSMC is the MD's to explain.
   R.dsmc_spec = R.fig4_spec;
-  R.dsmc_spec.method = sim::Method::dsmc;
+  R.dsmc_spec.methods = {sim::Method::dsmc};
   R.dsmc_spec.modes = {sim::Randomization::none};
   R.dsmc_spec.seeds = steps::k_dsmc_seed_factor * cfg.seeds;
 }
@@ -220,7 +226,8 @@ void run_ensembles(ReproduceResults& R, const ReproduceConfig& cfg, const SweepO
   const std::vector<RunOutcome> oe(outcomes.begin() + n4 + n3, outcomes.begin() + n4 + n3 + ne);
   const std::vector<RunOutcome> od(outcomes.begin() + n4 + n3 + ne, outcomes.end());
   R.fig4_points = summarize(R.fig4_spec, o4, cfg.window);
-  add_seeds_where_needed(R, cfg, sweep);
+  for (int stage = 0; stage < k_seed_stages; ++stage)
+    if (!add_seeds_where_needed(R, cfg, sweep)) break;
   R.fig3_points = summarize(R.fig3_spec, R.fig3_runs, cfg.window);
   R.elastic_points = summarize(R.elastic_spec, oe, cfg.window);
   R.dsmc_points = summarize(R.dsmc_spec, od, cfg.window);

@@ -32,6 +32,7 @@ void run_breakdown_studies(ReproduceResults& R) {
   // about a minute of CPU, so the quick look leaves them out.
   if (R.config.quick) return;
   R.breakdown = breakdown_study({}, &R.breakdown_curves);
+  R.breakdown_3d = breakdown_study(BreakdownSpec::three_dimensional(), &R.breakdown_curves_3d);
   GasFieldSpec spec;
   spec.density = R.config.fig3_density;
   spec.restitution = R.config.fig3_restitution;
@@ -226,40 +227,46 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
+std::string spec_header(const BreakdownSpec& spec) {
+  return fmt::format(
+      "# d = {}: density = {}, restitution = {}, boxes of N = {} (above L_c) and N = {} (below), "
+      "runs = {} per box, {} collisions per particle, base_seed = {}\n",
+      spec.dimension, spec.density, spec.restitution, spec.unstable_particles,
+      spec.stable_particles, spec.runs, spec.collisions_per_particle, spec.base_seed);
+}
+
 // Predicted against measured, with the difference in per cent and in standard errors.
 std::string linear_hydrodynamics_csv(const ReproduceResults& R) {
-  const BreakdownSpec spec;
-  std::string out = fmt::format(
-      "# break-down of the HCS: linear hydrodynamics (no free parameter) against simulation\n"
-      "# d = 2, density = {}, restitution = {}, boxes of N = {} (above L_c) and N = {} (below)\n"
-      "# runs = {} per box, {} collisions per particle, base_seed = {}\n"
+  std::string out =
+      "# break-down of the HCS: linear hydrodynamics (no free parameter) against simulation\n" +
+      spec_header(BreakdownSpec{}) + spec_header(BreakdownSpec::three_dimensional()) +
       "# measured: run mean, error: jackknife standard error over the runs\n"
-      "quantity,predicted,measured,error,difference_percent,difference_in_se,note\n",
-      spec.density, spec.restitution, spec.unstable_particles, spec.stable_particles, spec.runs,
-      spec.collisions_per_particle, spec.base_seed);
-  for (const auto& b : R.breakdown) {
-    const bool both = std::isfinite(b.measured) && std::isfinite(b.predicted);
-    out +=
-        fmt::format("{},{:.6g},{},{},{},{},{}\n", csv_field(b.quantity), b.predicted,
-                    std::isfinite(b.measured) ? fmt::format("{:.6g}", b.measured) : "",
-                    std::isfinite(b.measured_error) ? fmt::format("{:.3g}", b.measured_error) : "",
-                    both ? fmt::format("{:.3g}", 100 * (b.measured / b.predicted - 1)) : "",
-                    both && b.measured_error > 0
-                        ? fmt::format("{:.3g}", (b.measured - b.predicted) / b.measured_error)
-                        : "",
-                    csv_field(b.note));
-  }
+      "d,quantity,predicted,measured,error,difference_percent,difference_in_se,note\n";
+  for (const auto* rows : {&R.breakdown, &R.breakdown_3d})
+    for (const auto& b : *rows) {
+      const bool both = std::isfinite(b.measured) && std::isfinite(b.predicted);
+      out += fmt::format(
+          "{},{},{:.6g},{},{},{},{},{}\n", b.dimension, csv_field(b.quantity), b.predicted,
+          std::isfinite(b.measured) ? fmt::format("{:.6g}", b.measured) : "",
+          std::isfinite(b.measured_error) ? fmt::format("{:.3g}", b.measured_error) : "",
+          both ? fmt::format("{:.3g}", 100 * (b.measured / b.predicted - 1)) : "",
+          both && b.measured_error > 0
+              ? fmt::format("{:.3g}", (b.measured - b.predicted) / b.measured_error)
+              : "",
+          csv_field(b.note));
+    }
   return out;
 }
 
 std::string structure_factor_curves_csv(const ReproduceResults& R) {
   std::string out =
       "# S_perp(k, tau) of the break-down study: run mean, standard error, linear prediction\n"
-      "box,k,tau,S_perp,S_perp_error,S_perp_predicted\n";
-  for (const auto& c : R.breakdown_curves)
-    for (std::size_t j = 0; j < c.tau.size(); ++j)
-      out += fmt::format("{:.6g},{:.6g},{:.6g},{:.6g},{:.3g},{:.6g}\n", c.box, c.wavenumber,
-                         c.tau[j], c.measured[j], c.error[j], c.predicted[j]);
+      "d,box,k,tau,S_perp,S_perp_error,S_perp_predicted\n";
+  for (const auto* curves : {&R.breakdown_curves, &R.breakdown_curves_3d})
+    for (const auto& c : *curves)
+      for (std::size_t j = 0; j < c.tau.size(); ++j)
+        out += fmt::format("{},{:.6g},{:.6g},{:.6g},{:.6g},{:.3g},{:.6g}\n", c.dimension, c.box,
+                           c.wavenumber, c.tau[j], c.measured[j], c.error[j], c.predicted[j]);
   return out;
 }
 

@@ -1,15 +1,19 @@
-// The figure steps of the reproduction: the data behind Fig. 4, b(ε), Fig. 3 and the snapshot,
-// each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
+// The figure steps of the reproduction: the data behind Fig. 4, b(ε), a2(ε), Fig. 3 and the
+// snapshot, each computed from the ensembles once. Claims (reproduce_claims.cpp) read these data.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/paper_constants.hpp"
 #include "molchaos/theory/sonine.hpp"
+#include "molchaos/theory/sonine_hcs.hpp"
 #include "reproduce_steps.hpp"
 
 namespace molchaos::validation::steps {
@@ -17,9 +21,22 @@ namespace {
 
 constexpr int k_dimension = 2;
 
-// One gas of Fig. 4's panel at density n: its A(ε) points and their straight-line fit.
+// The point of one gas at (n, ε): `mode` is a randomization's name, or "dsmc" for the DSMC
+// ensemble.
+const PointResult& gas_point(const ReproduceResults& R, double n, double e,
+                             const std::string& mode) {
+  return mode == "dsmc" ? find_dsmc_point(R, n, e) : find_point(R, n, e, mode);
+}
+
+// Every gas of Figs. 4 and a2(ε): the MD modes, then DSMC.
+std::vector<std::string> gas_modes() {
+  std::vector<std::string> modes;
+  for (auto mode : k_modes) modes.emplace_back(sim::to_string(mode));
+  modes.emplace_back("dsmc");
+  return modes;
+}
+
 // One series of Fig. 4: A(ε) of an ensemble's points at density n, with its straight-line fit.
-// `mode` is a randomization's name, or "dsmc" for the DSMC ensemble.
 ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   ASeries s;
   s.mode = mode;
@@ -27,7 +44,7 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   std::vector<double> x;
   std::vector<Measurement> y;
   for (double e : R.config.restitutions) {
-    const auto& p = mode == "dsmc" ? find_dsmc_point(R, n, e) : find_point(R, n, e, s.mode);
+    const auto& p = gas_point(R, n, e, mode);
     if (p.summary.runs == 0) continue;
     s.points.push_back({e, p.summary.A, p.summary.runs});
     x.push_back(e);
@@ -45,9 +62,7 @@ void figure_fig4(ReproduceResults& R) {
   for (double n : cfg.densities) {
     Fig4Panel panel;
     panel.density = n;
-    for (auto mode : k_modes)
-      panel.series.push_back(a_series(R, n, std::string(sim::to_string(mode))));
-    panel.series.push_back(a_series(R, n, "dsmc"));
+    for (const std::string& mode : gas_modes()) panel.series.push_back(a_series(R, n, mode));
     // Kinetic theory, b = 0: A = 1/(ω0 μ2/μ2(0,0)) with the first-Sonine a2(ε).
     for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
       panel.theory_restitution.push_back(e);
@@ -61,7 +76,46 @@ void figure_fig4(ReproduceResults& R) {
 
 namespace {
 
-// b from the cooling rates of the original and the flux gas, paired by seed: with the paper's
+// a2(ε) of one gas at density n: each point's a2 (mean ± SE over runs of the window average).
+A2Series a2_series(const ReproduceResults& R, double n, const std::string& mode) {
+  A2Series s{mode_label(mode), mode, {}, {}};
+  for (double e : R.config.restitutions) {
+    const auto& p = gas_point(R, n, e, mode);
+    if (p.summary.runs == 0) continue;
+    s.restitution.push_back(e);
+    s.a2.push_back(p.summary.a2);
+  }
+  return s;
+}
+
+}  // namespace
+
+// The gases' a2 against the first-Sonine a2 the paper quotes (eq. a2linD) and the improved a2
+// (a2² and a3, theory/sonine_hcs.hpp); the theory does not depend on the density.
+void figure_a2(ReproduceResults& R) {
+  const auto& cfg = R.config;
+  R.a2.title = fmt::format("Sonine coefficient a2(ε), d = {}, N = {}", k_dimension, cfg.particles);
+  R.a2.dimension = k_dimension;
+  A2Panel theory_grid;
+  for (double e = cfg.restitutions.front(); e <= cfg.restitutions.back() + 1e-9; e += 0.005) {
+    const theory::HcsSonine levels = theory::hcs_sonine_coefficients(k_dimension, e);
+    theory_grid.theory_restitution.push_back(e);
+    theory_grid.first_sonine.push_back(levels.first_sonine.a2);
+    theory_grid.improved.push_back(levels.a2_a3.a2);
+  }
+  for (double n : cfg.densities) {
+    A2Panel panel = theory_grid;
+    panel.density = n;
+    for (const std::string& mode : gas_modes()) panel.series.push_back(a2_series(R, n, mode));
+    R.a2.panels.push_back(std::move(panel));
+  }
+}
+
+namespace {
+
+// b from the cooling rates of the original and the flux gas, as independent means (the gases get
+// their seeds apart; their weak positive correlation over common seeds makes these errors slightly
+// conservative): with the paper's
 // linear coefficient 63/40 and its ω0 (3D prefactor), and with the suite's full coefficients.
 // R(a2, b) = R0(a2) + b·cb(a2) and A ∝ 1/R give b = R0 (A_rand/A − 1)/cb.
 void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& paper_way,
@@ -72,8 +126,9 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
   const double g2 = theory::contact_value_g2_at_density(k_dimension, n);
   const double omega0_paper =
       theory::k_paper_omega0_prefactor * g2 * n * std::sqrt(std::numbers::pi);
-  const Measurement diff =
-      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return o - r; });
+  const Measurement& Ao = orig.summary.A;
+  const Measurement& Ar = rand.summary.A;
+  const Measurement diff{Ao.value - Ar.value, std::hypot(Ao.error, Ar.error)};
   paper_way.restitution.push_back(e);
   const double coefficient_b = -theory::k_paper_coefficient_b;
   paper_way.b.push_back(
@@ -81,8 +136,8 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
   const double a2 = theory::a2_first_sonine(k_dimension, e);
   const double R0 = mu2_ratio_at_b0(R.coefficients, a2);
   const double cb = mu2_ratio_b_slope(R.coefficients, a2);
-  const Measurement ratio =
-      paired_by_seed(orig.summary, rand.summary, [](double o, double r) { return r / o; });
+  const double r = Ar.value / Ao.value;
+  const Measurement ratio{r, r * std::hypot(Ar.error / Ar.value, Ao.error / Ao.value)};
   suite_way.restitution.push_back(e);
   suite_way.b.push_back({R0 * (ratio.value - 1.0) / cb, R0 * ratio.error / std::abs(cb)});
 }
@@ -171,6 +226,34 @@ TemperatureCurve deviation_curve(const TemperatureCurve& gas, double tau0, bool 
   return d;
 }
 
+// Fig. 3 needs a curve of every gas. A gas without one (every run failed, or no sample at t ≥ 1)
+// stops the reproduction with the cause, instead of an empty curve the renderer cannot place.
+void require_every_curve(const ReproduceResults& R, const std::vector<TemperatureCurve>& gases) {
+  // A failed outcome holds no parameters: its mode is that of the run at its place in the spec.
+  const auto runs = expand(R.fig3_spec);
+  std::vector<std::string> missing, errors;
+  for (std::size_t k = 0; k < gases.size(); ++k) {
+    if (!gases[k].t.empty()) continue;
+    missing.push_back(std::string(sim::to_string(k_modes[k])));
+    for (std::size_t j = 0; j < R.fig3_runs.size() && j < runs.size(); ++j)
+      if (!R.fig3_runs[j].ok && runs[j].randomize == k_modes[k])
+        errors.push_back(R.fig3_runs[j].error);
+  }
+  if (missing.empty()) return;
+  if (errors.empty())
+    throw std::runtime_error(fmt::format(
+        "Fig. 3 cannot be drawn: the runs of randomize = {} have no sample at t >= 1 (t_end = {})",
+        fmt::join(missing, ", "), R.config.fig3_t_end));
+  // Every failure is on stderr already; the first few name the cause in the one-line message.
+  constexpr std::size_t k_listed = 3;
+  const std::size_t listed = std::min(errors.size(), k_listed);
+  throw std::runtime_error(fmt::format(
+      "Fig. 3 cannot be drawn: no run of randomize = {} succeeded ({} failed): {}{}",
+      fmt::join(missing, ", "), errors.size(),
+      fmt::join(errors.begin(), errors.begin() + static_cast<std::ptrdiff_t>(listed), "; "),
+      errors.size() > listed ? fmt::format("; and {} more", errors.size() - listed) : ""));
+}
+
 }  // namespace
 
 void figure_fig3(ReproduceResults& R) {
@@ -186,6 +269,7 @@ void figure_fig3(ReproduceResults& R) {
       if (o.ok && o.result.parameters.randomize == mode) group.push_back(&o.result);
     gases.push_back(mean_curve(group, mode_label(std::string(sim::to_string(mode)))));
   }
+  require_every_curve(R, gases);
   const std::vector<double> times = gases.front().t;
   R.fig3.curves = gases;
   R.fig3.curves.push_back(haff_curve(

@@ -40,6 +40,7 @@ double mu2_ratio_b_slope(const theory::ExpansionTable& table, double a2);
 // --- figures ------------------------------------------------------------------------------
 void figure_fig4(ReproduceResults& results);
 void figure_b(ReproduceResults& results);
+void figure_a2(ReproduceResults& results);
 void figure_fig3(ReproduceResults& results);
 void figure_snapshot(ReproduceResults& results);
 
@@ -63,6 +64,12 @@ Claim finding_dsmc_a2_against_sonine(const ReproduceResults& results);
 Claim finding_higher_order_coefficients(const ReproduceResults& results);
 Claim finding_two_particle_distribution(const ReproduceResults& results);
 Claim finding_breakdown_prediction(const ReproduceResults& results);
+Claim finding_breakdown_prediction_3d(const ReproduceResults& results);
+
+// --- the precision of the Fig. 4 ensembles (reproduce_precision.cpp) ---------------------------
+/// Largest SE(A)/A over the Fig. 4 points with at least two runs.
+double largest_relative_error_of_A(const ReproduceResults& results);
+Claim finding_estimator_precision(const ReproduceResults& results);
 
 // --- studies with runs of their own (reproduce_studies.cpp) -----------------------------------
 /// Runs the correlation study (and, at paper scale, the break-down study) into `results`.

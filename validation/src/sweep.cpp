@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -21,6 +20,7 @@
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/validation/sweep_reporter.hpp"
+#include "molchaos/validation/sweep_worker.hpp"
 
 namespace molchaos::validation {
 
@@ -101,7 +101,9 @@ std::string verified_content(const std::string& path, const std::string& key) {
 bool load_cached(const sim::Parameters& p, const SweepOptions& o, sim::RunResult& out) {
   if (o.cache_directory.empty()) return false;
   const std::string path = cache_path(p, o);
-  if (!std::filesystem::exists(path)) return false;
+  // A folder that cannot be searched hides its entries: recompute (storing then names the folder).
+  std::error_code unreadable;
+  if (!std::filesystem::exists(path, unreadable)) return false;
   // Snapshots are not stored in the run file; a run that asked for them is recomputed.
   if (!p.snapshot_times.empty()) return false;
   try {
@@ -131,8 +133,7 @@ void store_cached(const sim::RunResult& r, const SweepOptions& o) {
           << content;
     });
   } catch (const std::exception& e) {
-    throw CacheWriteError("cannot store a run in the cache " + o.cache_directory + ": " +
-                          e.what());
+    throw CacheWriteError("cannot store a run in the cache " + o.cache_directory + ": " + e.what());
   }
 }
 
@@ -159,32 +160,21 @@ std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& ru
   const int threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   std::atomic<std::size_t> next{0};
   SweepReporter reporter(o, runs.size(), threads);
-  std::mutex storage_mutex;
-  std::string storage_error;  // the first CacheWriteError: the sweep stops at it
-  std::atomic<bool> storage_failed{false};
+  CacheWriteStop stop;
   auto worker = [&] {
     for (;;) {
       const std::size_t i = next.fetch_add(1);
-      if (i >= runs.size() || storage_failed) return;
+      if (i >= runs.size() || stop.stopped()) return;
       RunOutcome& outcome = out[i];
-      try {
-        outcome.from_cache = load_cached(runs[i], o, outcome.result);
-        if (!outcome.from_cache) outcome.result = run_and_cache(runs[i], o);
-        outcome.ok = true;
-      } catch (const CacheWriteError& e) {
-        const std::lock_guard lock(storage_mutex);
-        if (!storage_failed.exchange(true)) storage_error = e.what();
-        return;
-      } catch (const std::exception& e) {
-        reporter.failed(i, runs[i], e.what(), outcome);
-      }
+      outcome.ok = outcome.from_cache = load_cached(runs[i], o, outcome.result);
+      if (!outcome.from_cache && !compute_and_store(i, runs[i], o, reporter, stop, outcome)) return;
       reporter.done(outcome.from_cache);
     }
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
-  if (storage_failed) throw CacheWriteError(storage_error);
+  stop.throw_if_stopped();
   return out;
 }
 

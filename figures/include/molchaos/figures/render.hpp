@@ -1,6 +1,7 @@
-// Renders the paper's figures (Fig. 3, Fig. 4, b(ε), a snapshot, the quadrature's work–precision
-// diagram) from the plain data types of validation/ into PNG and PDF files with gnuplot. Next to
-// every figure goes its gnuplot script with the data inline, so the figure can be re-plotted.
+// Renders the paper's figures (Fig. 3, Fig. 4, b(ε), a2(ε), a snapshot, the quadrature's
+// work–precision diagram) from the plain data types of validation/ into PNG and PDF files with
+// gnuplot. Next to every figure goes its gnuplot script with the data inline, so the figure can be
+// re-plotted.
 #pragma once
 
 #include <string>
@@ -31,6 +32,9 @@ struct RenderedFigure {
 // std::runtime_error naming the file when gnuplot is missing or fails; on error it leaves no file
 // of its own behind.
 
+/// True when gnuplot runs and knows `terminal` (e.g. "gif", which some builds lack).
+bool gnuplot_has_terminal(const std::string& terminal, const RenderOptions& options);
+
 /// Fig. 3: T/T0 against ln t, every curve, the clustering onset marked, and an inset magnifying
 /// inset_log_t_min ≤ ln t ≤ inset_log_t_max. Writes fig3_temperature.{png,pdf,gp}.
 RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions& options);
@@ -42,6 +46,10 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
 /// b(ε), one panel per density, one point set per way of obtaining it.
 /// Writes fig_b_of_eps.{png,pdf,gp}.
 RenderedFigure render_b(const validation::BData& data, const RenderOptions& options);
+
+/// a2(ε), one panel per density: every gas's points with error bars, the first-Sonine a2 (dashed)
+/// and the improved a2 with a2² and a3 (solid). Writes fig_a2_of_eps.{png,pdf,gp}.
+RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& options);
 
 /// Particles coloured by speed with the coarse-grained velocity field as arrows.
 /// Writes fig_snapshot.{png,pdf,gp}.
@@ -62,11 +70,23 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
 RenderedFigure render_flow_field(const validation::FlowFieldData& data,
                                  const RenderOptions& options);
 
+/// The flow-field figure as an animated GIF, one frame per row of `data` (a time), the gases
+/// side by side; colour ranges per frame, one arrow scale for all. Writes fig_flow_field.gif and
+/// its script fig_flow_field_animation.gp; needs gnuplot's gif terminal (gnuplot_has_terminal).
+RenderedFigure render_flow_field_animation(const validation::FlowFieldData& data,
+                                           const RenderOptions& options);
+
 /// S⊥(k, τ) against linear hydrodynamics, and S⊥, S(k) of the largest modes against ln t for
 /// the original and the randomized gases. Writes fig_structure_factor.{png,pdf,gp}.
 RenderedFigure render_structure_factors(const std::vector<validation::StructureFactorCurve>& curves,
                                         const validation::GasFieldStudy& gases,
                                         const RenderOptions& options);
+
+/// S⊥(k, τ) against linear hydrodynamics alone, one panel under `title` (the d = 3 set).
+/// Writes <basename>.{png,pdf,gp}.
+RenderedFigure render_linear_hydrodynamics(
+    const std::vector<validation::StructureFactorCurve>& curves, const std::string& title,
+    const std::string& basename, const RenderOptions& options);
 
 /// G∥(r) and G⊥(r) of the original and the molecular-chaos gas at every stored time, one state
 /// point. Writes fig_pair_correlations.{png,pdf,gp}.

@@ -14,7 +14,9 @@ namespace molchaos::mpi {
 
 /// Master side, rank 0 only; a validation::SweepRunner. Same contract as run_sweep: outcomes in
 /// input order, failures reported in their outcome and on stderr, cache read and written by this
-/// rank as the local runner does. One run per rank at a time: options.threads is not used.
+/// rank as the local runner does; a cache that cannot take a result stops the sweep with that
+/// validation::CacheWriteError once the runs in flight are back, as the local runner does.
+/// One run per rank at a time: options.threads is not used.
 /// Runs that ask for snapshots (not carried by the CSV text) are computed on rank 0.
 std::vector<validation::RunOutcome> run_sweep_distributed(const std::vector<sim::Parameters>& runs,
                                                           const validation::SweepOptions& options);

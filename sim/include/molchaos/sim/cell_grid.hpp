@@ -3,6 +3,8 @@
 // stencil when a particle crosses into the next cell. Pure index arithmetic (no storage).
 #pragma once
 
+#include <cstdint>
+
 namespace molchaos::sim {
 
 template <int D>
@@ -31,28 +33,41 @@ int cell_index(const int* x, int cps) {
 }
 
 // cell_coords() without integer division (a few cycles instead of tens; the event loop needs a
-// particle's cell coordinates at every event and keeps only its cell index): floor((c + 0.5) /
-// cps^k) in double precision. Exact for c < 2^31: c + 0.5 lies at least 0.5 from a multiple of
-// cps^k, so the quotient lies at least 0.5 / cps^k from an integer, far above its rounding
-// error (below 2^31 / cps^k * 2.3e-16).
+// particle's cell coordinates at every event and keeps only its cell index): c / d as the high
+// word of the 128-bit product c * m, m = floor(2^64 / d) + 1 (Granlund & Montgomery 1994). Exact
+// for 0 <= c < 2^31 and d >= 1: c * m / 2^64 exceeds c / d by less than c / 2^64 < 2^-33, while
+// c / d lies at least 1 / d > 2^-31 below the next integer. One multiply instead of the four
+// conversions and products of a floating-point quotient.
+namespace detail {
+__extension__ typedef unsigned __int128 uint128;
+inline std::uint64_t reciprocal(std::uint64_t d) { return ~std::uint64_t{0} / d + 1; }
+inline int quotient(int c, std::uint64_t reciprocal) {
+  return static_cast<int>((static_cast<uint128>(static_cast<std::uint64_t>(c)) * reciprocal) >> 64);
+}
+}  // namespace detail
+
 template <int D>
 struct CellCoordinates {
   int cps = 1;
-  double inverse = 1;       // 1 / cps
-  double inverse_area = 1;  // 1 / cps^2
+  std::uint64_t per_row = 0;    // reciprocal of cps (0: cps = 1, every quotient 0)
+  std::uint64_t per_layer = 0;  // reciprocal of cps^2
 
   explicit CellCoordinates(int cells_per_side = 1)
       : cps(cells_per_side),
-        inverse(1.0 / cells_per_side),
-        inverse_area(1.0 / (static_cast<double>(cells_per_side) * cells_per_side)) {}
+        per_row(cells_per_side > 1 ? detail::reciprocal(static_cast<std::uint64_t>(cells_per_side))
+                                   : 0),
+        per_layer(cells_per_side > 1
+                      ? detail::reciprocal(static_cast<std::uint64_t>(cells_per_side) *
+                                           static_cast<std::uint64_t>(cells_per_side))
+                      : 0) {}
 
   void operator()(int c, int* x) const {
     if constexpr (D == 3) {
-      const int z = static_cast<int>((c + 0.5) * inverse_area);
+      const int z = detail::quotient(c, per_layer);
       x[2] = z;
       c -= z * cps * cps;
     }
-    const int y = static_cast<int>((c + 0.5) * inverse);
+    const int y = detail::quotient(c, per_row);
     x[1] = y;
     x[0] = c - y * cps;
   }

@@ -128,40 +128,55 @@ class Engine {
   template <class Self, class Archive>
   static void checkpoint_members(Self& self, Archive& archive);
   enum class Outcome { reached, resync, paused, stopped };
-  template <class Shuffle>
+  // Prefetch: the engine's data outgrow the cache (outgrows_cache_), so the event loop prefetches
+  // records; a template parameter, so that an engine in the cache does not test for it at every
+  // event and every pair search.
+  template <class Shuffle, bool Prefetch>
   Outcome run_events(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
                      const Shuffle& shuffle);
-  Outcome dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model);
   template <class Shuffle>
+  Outcome run_events_for(double tau_stop, std::uint64_t event_limit, const CollisionModel& model,
+                         const Shuffle& shuffle);
+  Outcome dispatch(double tau_stop, std::uint64_t event_limit, const CollisionModel& model);
+  Outcome dispatch_shuffle(double tau_stop, std::uint64_t event_limit, const CollisionModel& model);
+  template <bool Prefetch, class Shuffle>
   void collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
                const Shuffle& shuffle);
+  template <bool Prefetch>
   void cross_cell(std::int32_t i);
+  template <bool Prefetch = false>
   void predict(std::int32_t i);
-  double pair_time(std::int32_t i, std::int32_t j) const;
+  // The hot helpers carry always_inline here, on their declarations: on the out-of-class
+  // definitions alone GCC took it as a hint and kept earliest() and advance_particle() out of line
+  // in cross_cell() (3 % more instructions per collision in the paper's case).
+  [[gnu::always_inline]] double pair_time(std::int32_t i, std::int32_t j) const;
 #if defined(__SSE2__)
-  __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
+  [[gnu::always_inline]] __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
 #endif
   template <int Count>
-  std::int32_t gather(const int* cells);
-  void earliest(std::int32_t i, std::int32_t* list, std::int32_t count, double& best,
-                std::int32_t& partner) const;
-  bool interior_cell(const int* x) const;
-  void stencil_of(std::int32_t i, const int* x, int* stencil) const;
-  void crossing(std::int32_t i, const int* x);
+  [[gnu::always_inline]] std::int32_t gather(const int* cells);
+  template <bool Prefetch>
+  [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
+                                       double& best, std::int32_t& partner) const;
+  [[gnu::always_inline]] bool interior_cell(const int* x) const;
+  [[gnu::always_inline]] void stencil_of(std::int32_t i, const int* x, int* stencil) const;
+  [[gnu::always_inline]] void crossing(std::int32_t i, const int* x);
   void shell_exit(std::int32_t i);
+  template <bool Prefetch>
   void rebuild_neighbours(std::int32_t i);
   void build_neighbour_lists();
   void collect_neighbours(std::int32_t i, bool only_higher);
-  void advance_particle(std::int32_t i);
+  [[gnu::always_inline]] void advance_particle(std::int32_t i);
   void resync();
   void remove_momentum_drift();
   void rebuild_events();
   void sort_by_cell();
   void build_cells();
   int cell_of_position(const double* r) const;
-  void file_in_cell(std::int32_t i, int c);
-  void cell_remove(std::int32_t i);
-  std::int32_t slot_in_block(const std::int32_t* block, std::int32_t i) const;
+  [[gnu::always_inline]] void file_in_cell(std::int32_t i, int c);
+  [[gnu::always_inline]] void cell_remove(std::int32_t i);
+  [[gnu::always_inline]] std::int32_t slot_in_block(const std::int32_t* block,
+                                                    std::int32_t i) const;
   void grow_cells();
   void request_stop(StopReason reason);
   double sum_velocity_squared() const;

@@ -30,6 +30,10 @@ enum class Method { edmd, dsmc };
 std::string_view to_string(Randomization mode);
 std::optional<Randomization> parse_randomization(std::string_view text);
 
+/// Whether `method` can run the randomization `mode`: EDMD every mode, DSMC only none (a shuffle
+/// only permutes velocities, which leaves the DSMC state unchanged).
+bool method_runs_mode(Method method, Randomization mode);
+
 struct Parameters {
   int dimension = 2;
   std::int64_t particles = 5000;

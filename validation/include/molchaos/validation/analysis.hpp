@@ -1,13 +1,14 @@
-// From runs to numbers with error bars: per-run Haff fit and contact statistics, ensemble means
+// From runs to numbers with error bars: per-run τ0 (haff_estimators.hpp) and contact statistics, ensemble means
 // with standard errors, weighted straight-line fits, and the correlation coefficient b.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "molchaos/sim/result.hpp"
 #include "molchaos/validation/figure_data.hpp"
-#include "molchaos/validation/haff_fit.hpp"
+#include "molchaos/validation/haff_estimators.hpp"
 #include "molchaos/validation/hcs_window.hpp"
 
 namespace molchaos::validation {
@@ -16,7 +17,7 @@ struct RunAnalysis {
   bool ok = false;
   std::string message;
   FitWindow window;
-  HaffFit fit;
+  Tau0Estimate tau0;  ///< by k_haff_estimator over the window
   double A = 0.0;          ///< τ0(T0 = 1)·(1 − ε²)
   double mean_dyad = 0.0;  ///< collision average of 3(c1·e)(c2·e) − c1·c2 in the window
   std::uint64_t window_collisions = 0;
@@ -49,19 +50,11 @@ struct PointSummary {
   int breakdowns = 0;  ///< runs in which the break-down was detected
   Measurement breakdown_time;
   std::vector<std::pair<std::uint64_t, double>> A_by_seed;  ///< (seed, A) of each fitted run
+  /// A of each fitted run by every estimator, in the order of k_haff_estimators (the
+  /// estimator study compares their scatter on the same runs).
+  std::vector<std::array<double, k_haff_estimators.size()>> A_by_estimator;
   std::vector<std::string> messages;
 };
-
-/// Mean ± standard error of f(A_a, A_b) over the seeds both points have (common random numbers:
-/// runs with the same seed start from the same relaxed state). Iterates a's runs in order.
-template <class F>
-Measurement paired_by_seed(const PointSummary& a, const PointSummary& b, F f) {
-  std::vector<double> values;
-  for (const auto& [seed, A] : a.A_by_seed)
-    for (const auto& [seed_b, A_b] : b.A_by_seed)
-      if (seed_b == seed) values.push_back(f(A, A_b));
-  return mean_and_standard_error(values);
-}
 
 PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
                              const WindowRule& rule);

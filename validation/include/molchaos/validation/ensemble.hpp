@@ -29,29 +29,44 @@ struct EnsembleSpec {
   int samples_per_decade = 40;
   double relax_collisions_per_particle = 20.0;
   bool contact_statistics = true;
-  /// Every run of the sweep uses this method (one method per sweep: the summary names it in its
-  /// header, not in a column).
-  sim::Method method = sim::Method::edmd;
+  /// The methods; each runs every listed mode it can (sim::method_runs_mode: DSMC only mode
+  /// none, so it runs once per state point beside the MD's shuffles). Every method must run one
+  /// listed mode at least, and every mode must be run by one listed method at least.
+  std::vector<sim::Method> methods{sim::Method::edmd};
 };
+
+/// One kind of run at every state point: a method with a mode it runs.
+struct RunKind {
+  sim::Method method = sim::Method::edmd;
+  sim::Randomization mode = sim::Randomization::none;
+};
+
+/// The kinds of run of a spec at each state point, methods in their listed order and within each
+/// its modes in theirs (pairs the method cannot run left out).
+std::vector<RunKind> run_kinds(const EnsembleSpec& spec);
 
 /// Throws std::invalid_argument naming the field for an empty or out-of-range spec.
 void validate(const EnsembleSpec& spec);
 
+/// The name of a method as the parameter table spells it ("edmd", "dsmc").
+std::string method_name(sim::Method method);
+
 /// Kinetic-theory τ0 (T0 = 1, b = 0) used to size the runs; +inf at ε = 1.
 double theory_tau0(int dimension, double density, double restitution);
 
-/// All runs, ordered by density, restitution, mode, seed index. Seed index i uses
-/// derive_seed(base_seed, i) at every state point and mode (common random numbers: the modes
-/// and restitutions at one density start from the same relaxed configurations).
+/// All runs, ordered by density, restitution, run kind (run_kinds), seed index. Seed index i uses
+/// derive_seed(base_seed, i) at every state point, method and mode (common random numbers: the
+/// modes and restitutions at one density start from the same relaxed configurations).
 std::vector<sim::Parameters> expand(const EnsembleSpec& spec);
 
 struct PointResult {
   PointSummary summary;
+  sim::Method method = sim::Method::edmd;
   Measurement A_theory;         ///< b = 0
   Measurement collision_ratio;  ///< ε = 1 only: ω/ω_Enskog, mean ± SE
 };
 
-/// Groups outcomes by (density, restitution, mode) in the order of expand().
+/// Groups outcomes by (density, restitution, method, mode) in the order of expand().
 std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<RunOutcome>& runs,
                                    const WindowRule& rule);
 

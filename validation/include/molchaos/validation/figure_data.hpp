@@ -74,6 +74,30 @@ struct Fig4Data {
   std::vector<Fig4Panel> panels;  ///< left: n = 0.05, right: n = 0.1
 };
 
+/// One gas's a2(ε) at one density: at each ε the mean ± standard error over runs of each run's a2
+/// averaged over the homogeneous-cooling window of its Haff fit.
+struct A2Series {
+  std::string label;
+  std::string mode;  ///< "none", "paper", "flux" (MD) or "dsmc"
+  std::vector<double> restitution;
+  std::vector<Measurement> a2;
+};
+
+/// One panel of the a2(ε) figure (one density): the gases and the Sonine theory on a fine ε grid.
+struct A2Panel {
+  double density = 0.0;
+  std::vector<A2Series> series;
+  std::vector<double> theory_restitution;
+  std::vector<Measurement> first_sonine;  ///< van Noije & Ernst (the paper's eq. a2linD)
+  std::vector<Measurement> improved;      ///< with a2² and a3; error: the quadrature's
+};
+
+struct A2Data {
+  std::string title;
+  int dimension = 2;
+  std::vector<A2Panel> panels;
+};
+
 /// b(ε) three ways, for one density.
 struct BSeries {
   std::string

@@ -25,6 +25,11 @@ struct GasFieldSpec {
   int cells = 10;           ///< 50 particles per cell at N = 5000 (flow energy, density contrast)
   int field_cells = 24;     ///< grid of the figure's long-wave fields
   int field_max_norm2 = 5;  ///< the figure's fields keep the modes |m|² ≤ 5 (λ ≥ L/√5)
+  /// the animation (fig_flow_field.gif): the first run of each of these gases, frames evenly in
+  /// ln t from animation_first_log_time to the last of field_log_times (animation_log_times)
+  std::vector<std::string> animation_modes{"none", "flux"};
+  int animation_frames = 24;
+  double animation_first_log_time = 2.0;  ///< homogeneous: no mode has grown yet
   /// the largest modes: shells |m|² ≤ 2, the ones unstable at N = 5000 (k < k⊥ ⇔ |m| < L/L_c)
   int max_norm2 = 2;
   std::uint64_t base_seed = 4711;
@@ -54,7 +59,11 @@ struct GasFieldStudy {
   std::vector<double> wavenumbers;  ///< of the shells used
   std::vector<GasFieldSeries> series;
   FlowFieldData fields;
+  FlowFieldData animation;  ///< one row per frame, one column per animation mode
 };
+
+/// ln t of the animation's frames (empty if animation_frames = 0).
+std::vector<double> animation_log_times(const GasFieldSpec& spec);
 
 GasFieldStudy gas_field_study(const GasFieldSpec& spec = {});
 

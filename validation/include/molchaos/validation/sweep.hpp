@@ -63,13 +63,14 @@ void remove_stale_temporaries(const std::string& cache_directory);
 std::vector<RunOutcome> run_sweep_locally(const std::vector<sim::Parameters>& runs,
                                           const SweepOptions& options);
 
-/// Loads a cached run if a valid entry exists (used by run_sweep and by the MPI driver).
+/// Loads a cached run if a valid entry exists (used by run_sweep and by the MPI driver). Never
+/// throws: an entry it cannot find, read or verify is to be recomputed (false).
 bool load_cached(const sim::Parameters& p, const SweepOptions& options, sim::RunResult& out);
 /// The one place a run's cache file lives: <cache_directory>/<cache_key>.csv.
 std::string cache_path(const sim::Parameters& p, const SweepOptions& options);
 /// A cache entry could not be written (a full disk, a folder gone): a failure of the sweep's
-/// storage, not of the run. The message names the cache folder and the reason; the local sweep
-/// stops at it instead of counting the run as failed.
+/// storage, not of the run. The message names the cache folder and the reason; every sweep
+/// runner stops at it instead of counting the run as failed (see sweep_worker.hpp).
 struct CacheWriteError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
