@@ -20,6 +20,7 @@
 #include "config_file.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/sim.hpp"
+#include "molchaos/validation/run_pair_correlations.hpp"
 #ifdef MOLCHAOS_HAVE_IO
 #include "molchaos/io/h5md_writer.hpp"
 #include "molchaos/io/xyz_writer.hpp"
@@ -34,6 +35,7 @@ struct SimulateOptions {
   std::string out = "run.csv";
   std::string trajectory;  // H5MD file of the snapshots (empty: none)
   std::string xyz;         // extended XYZ file of the snapshots (empty: none)
+  std::string pair_correlations;  // g(r), G_par(r), G_perp(r) of the snapshots (empty: none)
   bool quiet = false;
   std::string write_config;  // TOML file of the parameters (empty: none)
   sim::CheckpointOptions checkpoints;
@@ -89,6 +91,11 @@ void run_simulate(const SimulateOptions& options) {
     require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
   if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
   if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
+  if (!options.pair_correlations.empty()) {
+    require_writable_file("--pair-correlations", options.pair_correlations, false);
+    if (p.snapshot_times.empty())
+      throw UsageError("--pair-correlations", "needs --snapshot-times (the times to measure at)");
+  }
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
@@ -103,7 +110,8 @@ void run_simulate(const SimulateOptions& options) {
   // DSMC keeps velocities only: there are no configurations to write.
   if (p.method == sim::Method::dsmc)
     for (const auto& [flag, path] :
-         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
+         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz},
+          std::pair{"--pair-correlations", &options.pair_correlations}})
       if (!path->empty())
         throw UsageError(flag,
                          "not allowed with --method dsmc (it has no positions); allowed "
@@ -146,6 +154,10 @@ void run_simulate(const SimulateOptions& options) {
     sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
       sim::write_snapshot_csv(result.snapshots[k], p.dimension, file);
     });
+  if (!options.pair_correlations.empty())
+    sim::write_file_atomically(options.pair_correlations, [&](std::ostream& file) {
+      validation::write_run_pair_correlations(result, file);
+    });
 #ifdef MOLCHAOS_HAVE_IO
   if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory);
   if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz);
@@ -175,6 +187,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--xyz", options->xyz,
                   "Extended XYZ file of the configurations at --snapshot-times, one frame each");
 #endif
+  cmd->add_option("--pair-correlations", options->pair_correlations,
+                  "CSV file of g(r), G_par(r) and G_perp(r) at each of --snapshot-times, all, "
+                  "approaching and receding pairs apart");
   cmd->add_flag("--quiet", options->quiet, "No progress display");
   sim::CheckpointOptions& checkpoints = options->checkpoints;
   cmd->add_option("--checkpoint", checkpoints.path,

@@ -68,6 +68,11 @@ std::vector<std::string> split(const std::string& line, char sep) {
 
 }  // namespace
 
+void write_parameter_lines(const Parameters& p, std::ostream& out) {
+  for (const ParameterInfo& info : parameter_table())
+    if (!omitted(p, info)) out << "# " << info.name << " = " << format_value(p, info) << "\n";
+}
+
 void write_csv(const RunResult& r, std::ostream& out) {
   const Parameters& p = r.parameters;
   out << (p.method == Method::dsmc ? "# molchaos simulate: DSMC of the homogeneous "
@@ -77,8 +82,7 @@ void write_csv(const RunResult& r, std::ostream& out) {
                                      "spheres (sigma = m = 1, T0 = "
                                      "1)\n")
       << "# version = " << r.version << "\n";
-  for (const ParameterInfo& info : parameter_table())
-    if (!omitted(p, info)) out << "# " << info.name << " = " << format_value(p, info) << "\n";
+  write_parameter_lines(p, out);
   out << "# stop_reason = " << stop_message(r) << "\n"
       << "# collisions = " << r.collisions << "\n"
       << "# events = " << r.events << "\n"

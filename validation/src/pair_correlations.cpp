@@ -33,6 +33,8 @@ std::vector<double> pair_grid(double r_max, int near, double near_width, int far
   return edges;
 }
 
+std::vector<double> default_pair_grid(double box) { return pair_grid(0.5 * box, 10, 0.05, 16); }
+
 namespace {
 
 double shell_volume(int d, double lo, double hi) {

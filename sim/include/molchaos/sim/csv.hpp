@@ -11,6 +11,9 @@
 namespace molchaos::sim {
 
 void write_csv(const RunResult& result, std::ostream& out);
+/// The parameter lines of a result file's header, "# <name> = <value>" per row of the parameter
+/// table (rows at an omitted default left out): what `--config FILE` reads back.
+void write_parameter_lines(const Parameters& p, std::ostream& out);
 /// Writes to a temporary file next to path, then renames: never a half-written file at path.
 void write_csv_file(const RunResult& result, const std::string& path);
 /// Parses what write_csv wrote; throws std::runtime_error on a corrupt or truncated file.

@@ -34,6 +34,10 @@ struct SnapshotPairSums {
 /// `far` logarithmically spaced bins up to r_max.
 std::vector<double> pair_grid(double r_max, int near, double near_width, int far);
 
+/// The grid of every pair-correlation table: 10 bins of 0.05σ from contact (the collision's
+/// imprint), then 16 logarithmic bins up to half the box side.
+std::vector<double> default_pair_grid(double box);
+
 /// The sums of one snapshot (positions in a periodic box of side snap.box), by a cell list whose
 /// cells are at least the largest edge wide (all pairs when fewer than 3 cells fit per side).
 /// Throws std::invalid_argument if the largest edge exceeds half the box.
