@@ -2,6 +2,7 @@
 // the molecular-chaos gas at three times; the contact moments against ε; the cooling rate taken
 // apart into collision frequency and energy loss per collision against ε.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -15,7 +16,8 @@ namespace molchaos::figures {
 namespace {
 
 std::string gas_label(const std::string& mode) {
-  return mode == "none" ? "original" : "molecular chaos (flux)";
+  if (mode == "none") return "original";
+  return mode == "dsmc" ? "molecular chaos (DSMC)" : "molecular chaos (flux)";
 }
 
 using detail::add_series;
@@ -94,19 +96,22 @@ RenderedFigure render_contact_moments(const std::vector<validation::ContactMomen
         "  plot -0.25 with lines linecolor rgb 'black' dashtype 2 title "
         "'molecular chaos, a_2 = 0'";
     std::size_t s = 0;
-    for (const std::string mode : {"none", "flux"})
+    const std::array<std::string, 3> modes{"none", "flux", "dsmc"};
+    for (std::size_t k = 0; k < modes.size(); ++k)
       for (int which = 0; which < 2; ++which) {
         detail::Rows data;
+        const double shift = (static_cast<double>(2 * k) + which - 2.5) * 0.0012;
         for (const auto& r : rows)
-          if (r.dimension == d && r.density == n && r.mode == mode) {
+          if (r.dimension == d && r.density == n && r.mode == modes[k]) {
             const auto& m = which == 0 ? r.c1e_c2e : r.c1_dot_c2;
-            data.push_back({r.restitution + (which - 0.5) * 0.002, m.value, m.error});
+            data.push_back({r.restitution + shift, m.value, m.error});
           }
-        add_series(
-            script, plot, detail::panel_block_name(p, s), data,
-            std::string("yerrorbars pointtype ") + (mode == "none" ? "7" : "6"),
-            static_cast<std::size_t>(which) + 1,
-            std::string(which == 0 ? "<(c_1·e)(c_2·e)>" : "<c_1·c_2>") + ", " + gas_label(mode));
+        if (data.empty()) continue;  // a gas not run in this panel (DSMC in a quick look)
+        add_series(script, plot, detail::panel_block_name(p, s), data,
+                   "yerrorbars pointtype " + detail::gas_point_type(modes[k], k),
+                   static_cast<std::size_t>(which) + 1,
+                   std::string(which == 0 ? "<(c_1·e)(c_2·e)>" : "<c_1·c_2>") + ", " +
+                       gas_label(modes[k]));
         ++s;
       }
     script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +

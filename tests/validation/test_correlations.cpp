@@ -16,6 +16,8 @@
 #include "molchaos/validation/analysis.hpp"
 #include "molchaos/validation/contact_ansatz.hpp"
 #include "molchaos/validation/contact_measurement.hpp"
+#include "molchaos/validation/correlation_analysis.hpp"
+#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/impact_parameter.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 
@@ -271,4 +273,40 @@ BOOST_AUTO_TEST_CASE(impact_parameter_rows_and_claims) {
   BOOST_TEST(std::abs(claims[1].deciding.value + 1.8 / 9.8) < 4 * claims[1].deciding.error);
   BOOST_TEST(claims[2].verdict == "holds");
   BOOST_TEST(claims[3].verdict == "not resolved");
+}
+
+BOOST_AUTO_TEST_CASE(dsmc_gas_has_the_molecular_chaos_contact_moments) {
+  // DSMC draws every collision pair from the one-particle distribution: molecular chaos by
+  // construction, with the a2 < 0 of the cooling state at ε = 0.8. Its four contact quantities
+  // must equal the Sonine form with its own measured a2 (the study's exact reference), and its
+  // impact parameter must be flat.
+  EnsembleSpec spec;
+  spec.particles = 5000;
+  spec.densities = {0.1};
+  spec.restitutions = {0.8};
+  spec.methods = {sim::Method::dsmc};
+  spec.modes = {sim::Randomization::none};
+  spec.seeds = 64;
+  spec.contact_statistics = true;
+  std::vector<RunContacts> runs;
+  std::vector<std::uint64_t> histogram(sim::ContactMoments::k_impact_bins, 0);
+  for (const auto& p : expand(spec)) {
+    runs.push_back(measure_contacts(sim::run(p), WindowRule{}));
+    BOOST_REQUIRE(runs.back().ok);
+    for (std::size_t b = 0; b < histogram.size(); ++b)
+      histogram[b] += runs.back().impact_histogram[b];
+  }
+  const ContactMomentRow row = summarize_contacts(2, 0.1, 0.8, "dsmc", runs);
+  const ContactQuantities mc = molecular_chaos_contact_sonine(row.a2.value, 0.0);
+  double chi2 = 0.0;
+  for (const auto& [m, expected] :
+       {std::pair{row.c1e_c2e, mc.P}, std::pair{row.c1_dot_c2, mc.Q},
+        std::pair{row.omega_over_enskog, mc.W}, std::pair{row.gn2_over_4T, mc.Y}}) {
+    BOOST_TEST_MESSAGE(m.value << " +- " << m.error << " (molecular chaos " << expected << ")");
+    chi2 += std::pow(normal_score((m.value - expected) / m.error, row.runs - 1), 2);
+  }
+  BOOST_TEST_MESSAGE("a2 = " << row.a2.value << " +- " << row.a2.error << ", chi2 = " << chi2);
+  BOOST_TEST(chi_square_p_value(chi2, 4) > 1e-3);
+  BOOST_TEST(row.a2.value < -3.0 * row.a2.error);  // the cooling state, not a Maxwell gas
+  BOOST_TEST(impact_flatness(histogram).p_value > 1e-3);
 }

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -12,6 +14,7 @@
 #include "molchaos/validation/impact_parameter.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/report.hpp"
+#include "molchaos/validation/run_pair_correlations.hpp"
 #include "molchaos/validation/verdict.hpp"
 
 namespace molchaos::validation {
@@ -25,6 +28,7 @@ CorrelationStudyConfig CorrelationStudyConfig::quick_look() {
   c.snapshot_seeds = 2;
   c.restitutions_3d = {0.8};
   c.seeds_3d = 4;
+  c.dsmc_seeds = 16;
   return c;
 }
 
@@ -46,6 +50,16 @@ EnsembleSpec study_spec(const CorrelationStudyConfig& cfg, int d, std::vector<do
   return s;
 }
 
+// The DSMC twin of an MD contact ensemble: same points, its own seeds, mode none (the method's
+// only one).
+EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
+  EnsembleSpec s = md;
+  s.methods = {sim::Method::dsmc};
+  s.modes = {Randomization::none};
+  s.seeds = seeds;
+  return s;
+}
+
 std::vector<sim::Parameters> with_snapshots(const CorrelationStudyConfig& cfg,
                                             const EnsembleSpec& spec) {
   auto runs = expand(spec);
@@ -56,19 +70,6 @@ std::vector<sim::Parameters> with_snapshots(const CorrelationStudyConfig& cfg,
     for (double f : cfg.snapshot_times_in_tau0) p.snapshot_times.push_back(f * tau0);
   }
   return runs;
-}
-
-// Collisions per particle at time t, interpolated linearly between the samples.
-double collisions_per_particle_at(const sim::RunResult& run, double t) {
-  const auto& s = run.samples;
-  const double n = static_cast<double>(run.parameters.particles);
-  for (std::size_t k = 1; k < s.size(); ++k)
-    if (s[k].t >= t) {
-      const double w = (t - s[k - 1].t) / (s[k].t - s[k - 1].t);
-      return 2.0 / n *
-             ((1 - w) * static_cast<double>(s[k - 1].collisions) + w * double(s[k].collisions));
-    }
-  return s.empty() ? 0.0 : 2.0 * static_cast<double>(s.back().collisions) / n;
 }
 
 // The outcomes of one (density, restitution) in expand() order: modes × seeds.
@@ -103,6 +104,16 @@ void add_contact_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, i
   pairs.push_back(std::move(gp));
 }
 
+void add_dsmc_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int d, double n,
+                    double e, const std::vector<std::vector<const RunOutcome*>>& by_mode) {
+  std::vector<RunContacts> runs;
+  for (const auto* o : by_mode.at(0))
+    if (o->ok) runs.push_back(measure_contacts(o->result, cfg.window));
+  S.contact_moments.push_back(summarize_contacts(d, n, e, "dsmc", runs));
+  for (auto& row : summarize_impact_parameter(d, n, e, "dsmc", runs))
+    S.impact_parameter.push_back(std::move(row));
+}
+
 void add_pair_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int d, double n,
                     double e, const std::vector<std::vector<const RunOutcome*>>& by_mode) {
   for (std::size_t m = 0; m < by_mode.size(); ++m)
@@ -115,8 +126,7 @@ void add_pair_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int 
         const FitWindow w =
             choose_window(o->result.samples, o->result.parameters.particles, cfg.window);
         if (!w.valid || snap.t < w.t_start || snap.t > w.t_stop) continue;  // not in the HCS
-        const auto edges = pair_grid(0.5 * snap.box, 10, 0.05, 16);
-        sums.push_back(pair_sums(snap, d, edges));
+        sums.push_back(pair_sums(snap, d, default_pair_grid(snap.box)));
         tau += collisions_per_particle_at(o->result, snap.t);
       }
       if (sums.empty()) continue;
@@ -229,30 +239,77 @@ void ansatz_claims(CorrelationStudy& S) {
        S.beta_par_routes.verdict, S.beta_par_routes.ratio, S.beta_par_routes.statement});
 }
 
-void control_claims(CorrelationStudy& S) {
+// P, Q, ω/ω_E and Y of a row, in that order.
+std::array<Measurement, 4> contact_quantities(const ContactMomentRow& r) {
+  return {r.c1e_c2e, r.c1_dot_c2, r.omega_over_enskog, r.gn2_over_4T};
+}
+
+std::string chaos_gas_name(const std::string& mode) {
+  return mode == "dsmc" ? "DSMC gas" : "flux-shuffled gas";
+}
+
+// A molecular-chaos reference's contact quantities against the Sonine form in full with its
+// measured a2 (a3 = 0 as it is not measured; the theory's a3 ≈ −0.01 would move P by ≈ −2.5e-4,
+// doc/validation.md): χ² of normal scores over all points.
+StudyClaim chaos_values_claim(const CorrelationStudy& S, const std::string& mode) {
   double chi2 = 0.0;
   int dof = 0;
   for (const auto& r : S.contact_moments) {
-    if (r.mode != "flux") continue;
-    // The Sonine form in full with the measured a2; a3 = 0 as it is not measured (the
-    // theory's a3 ≈ −0.01 would move P by ≈ −2.5e-4, doc/validation.md).
+    if (r.mode != mode) continue;
     const ContactQuantities mc = molecular_chaos_contact_sonine(r.a2.value, 0.0);
-    for (const auto& [m, v] :
-         {std::pair{r.c1e_c2e, mc.P}, std::pair{r.c1_dot_c2, mc.Q},
-          std::pair{r.omega_over_enskog, mc.W}, std::pair{r.gn2_over_4T, mc.Y}})
-      if (m.error > 0.0) {
-        chi2 += std::pow(normal_score((m.value - v) / m.error, r.runs - 1), 2);
+    const std::array<double, 4> expected{mc.P, mc.Q, mc.W, mc.Y};
+    const auto measured = contact_quantities(r);
+    for (std::size_t q = 0; q < 4; ++q)
+      if (measured[q].error > 0.0) {
+        chi2 += std::pow(normal_score((measured[q].value - expected[q]) / measured[q].error,
+                                      r.runs - 1),
+                         2);
         ++dof;
       }
   }
   const double p = chi_square_p_value(chi2, dof);
-  S.claims.push_back(
-      {"flux-shuffled gas: contact moments equal their molecular-chaos values", verdict_p(p),
-       Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
-       fmt::format(
-           "chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as independent), "
-           "chi2 = {:.1f}, dof = {}, p = {:.2g}",
-           chi2, dof, p)});
+  return {chaos_gas_name(mode) + ": contact moments equal their molecular-chaos values",
+          verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
+          fmt::format("chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as "
+                      "independent), chi2 = {:.1f}, dof = {}, p = {:.2g}",
+                      chi2, dof, p)};
+}
+
+// The two references against each other, point by point, with no theory in between: a
+// departure of the flux gas from the Sonine values that DSMC shares is the theory's, not the MD's.
+StudyClaim flux_equals_dsmc_claim(const CorrelationStudy& S) {
+  double chi2 = 0.0;
+  int dof = 0;
+  for (const auto& f : S.contact_moments) {
+    if (f.mode != "flux") continue;
+    for (const auto& g : S.contact_moments) {
+      if (g.mode != "dsmc" || g.dimension != f.dimension || g.density != f.density ||
+          g.restitution != f.restitution)
+        continue;
+      const auto a = contact_quantities(f), b = contact_quantities(g);
+      for (std::size_t q = 0; q < 4; ++q) {
+        const double se = std::hypot(a[q].error, b[q].error);
+        if (se <= 0.0) continue;
+        chi2 += std::pow(
+            normal_score((a[q].value - b[q].value) / se, std::min(f.runs, g.runs) - 1), 2);
+        ++dof;
+      }
+    }
+  }
+  const double p = chi_square_p_value(chi2, dof);
+  return {"flux-shuffled gas: contact moments equal the DSMC gas's at the same points",
+          verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
+          fmt::format("chi2/dof of normal scores of the differences over P, Q, omega/omega_E, Y, "
+                      "chi2 = {:.1f}, dof = {}, p = {:.2g}",
+                      chi2, dof, p)};
+}
+
+void control_claims(CorrelationStudy& S) {
+  for (const std::string mode : {"flux", "dsmc"})
+    if (std::any_of(S.contact_moments.begin(), S.contact_moments.end(),
+                    [&](const auto& r) { return r.mode == mode; }))
+      S.claims.push_back(chaos_values_claim(S, mode));
+  S.claims.push_back(flux_equals_dsmc_claim(S));
   for (const char* mode : {"flux", "none"}) {
     double c = 0.0;
     int k = 0;
@@ -287,10 +344,12 @@ CorrelationStudy run_correlation_study(const CorrelationStudyConfig& cfg,
       study_spec(cfg, 2, cfg.densities, cfg.snapshot_restitutions, cfg.snapshot_seeds);
   const EnsembleSpec p3 =
       study_spec(cfg, 3, {cfg.density_3d}, cfg.restitutions_3d, cfg.snapshot_seeds);
+  const EnsembleSpec d2 = dsmc_twin(c2, cfg.dsmc_seeds), d3 = dsmc_twin(c3, cfg.dsmc_seeds);
   std::vector<sim::Parameters> all;
   std::vector<std::size_t> offsets;
   for (const auto& [spec, snapshots] :
-       {std::pair{&c2, false}, std::pair{&c3, false}, std::pair{&p2, true}, std::pair{&p3, true}}) {
+       {std::pair{&c2, false}, std::pair{&c3, false}, std::pair{&p2, true}, std::pair{&p3, true},
+        std::pair{&d2, false}, std::pair{&d3, false}}) {
     offsets.push_back(all.size());
     const auto runs = snapshots ? with_snapshots(cfg, *spec) : expand(*spec);
     all.insert(all.end(), runs.begin(), runs.end());
@@ -311,6 +370,12 @@ CorrelationStudy run_correlation_study(const CorrelationStudyConfig& cfg,
     const EnsembleSpec& spec = k == 2 ? p2 : p3;
     for_each_point(spec, outcomes, offsets[k], [&](double n, double e, const auto& by_mode) {
       add_pair_point(S, cfg, spec.dimension, n, e, by_mode);
+    });
+  }
+  for (int k = 4; k < 6; ++k) {
+    const EnsembleSpec& spec = k == 4 ? d2 : d3;
+    for_each_point(spec, outcomes, offsets[k], [&](double n, double e, const auto& by_mode) {
+      add_dsmc_point(S, cfg, spec.dimension, n, e, by_mode);
     });
   }
   S.ansatz = fit_ansatz(pairs);

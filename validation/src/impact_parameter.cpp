@@ -61,7 +61,8 @@ std::vector<ImpactParameterRow> summarize_impact_parameter(int dimension, double
 namespace {
 
 std::string gas_name(const std::string& mode) {
-  return mode == "none" ? "original gas" : "flux-shuffled gas";
+  if (mode == "none") return "original gas";
+  return mode == "dsmc" ? "DSMC gas" : "flux-shuffled gas";
 }
 
 // Flat at every point of one gas: the points' Pearson χ² summed (each point once: its first bin).
@@ -117,7 +118,7 @@ StudyClaim grazing_claim(const std::vector<ImpactParameterRow>& rows, const std:
 
 std::vector<StudyClaim> impact_parameter_claims(const std::vector<ImpactParameterRow>& rows) {
   std::vector<StudyClaim> claims;
-  for (const std::string mode : {"none", "flux"})
+  for (const std::string mode : {"none", "flux", "dsmc"})
     if (std::any_of(rows.begin(), rows.end(), [&](const auto& r) { return r.mode == mode; })) {
       claims.push_back(flatness_claim(rows, mode));
       claims.push_back(grazing_claim(rows, mode));

@@ -333,6 +333,17 @@ std::string animation_line(const ReproduceResults& r, const std::vector<std::str
       frames.empty() ? 0.0 : animation_log_times(r.gas_fields.spec).back());
 }
 
+// The paper's central question in one paragraph: does one number b describe the two-particle
+// distribution at contact? Its two routes to b, and the two-amplitude form's, from the
+// correlation study's global tests.
+std::string two_routes_headline(const CorrelationStudy& c) {
+  if (c.b_routes.points == 0) return "";
+  return fmt::format(
+      "**The paper's b, two ways.** {} With one amplitude for the longitudinal and one for the "
+      "transverse velocity correlation at contact instead of the printed dyad: {}\n\n",
+      c.b_routes.statement, c.beta_par_routes.statement);
+}
+
 }  // namespace
 
 std::string report_markdown(const ReproduceResults& r, const std::vector<std::string>& figures,
@@ -340,6 +351,7 @@ std::string report_markdown(const ReproduceResults& r, const std::vector<std::st
   std::string s = "# molchaos: reproduction report\n\n";
   s += fmt::format("molchaos {} reproduces {}{}.\n\n", r.version, k_paper_reference,
                    r.config.quick ? " (**quick look**, not the paper's scale)" : "");
+  s += two_routes_headline(r.correlations);
   s += summary_section(r);
   s += setup_section(r, command);
   s += "## Figures\n\n";

@@ -14,7 +14,7 @@ namespace molchaos::validation {
 struct ContactMomentRow {
   int dimension = 2;
   double density = 0.0, restitution = 0.0;
-  std::string mode;  ///< "none" (original) or "flux" (molecular-chaos reference)
+  std::string mode;  ///< "none" (original); "flux" or "dsmc" (the molecular-chaos references)
   int runs = 0;
   Measurement omega_over_enskog, gn2_over_4T, c1e_c2e, c1_dot_c2, a2, A;
   double impact_chi2 = 0.0;  ///< flatness of the impact-parameter histogram (0 if not filled)
