@@ -37,9 +37,15 @@ std::string temporary_name(const std::string& path) {
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(random()));
   const fs::path p(path);
-  return (p.parent_path() / ("." + p.filename().string() + k_marker + host_name() + "." +
-                             std::to_string(::getpid()) + "." + hex))
-      .string();
+  std::string name = ".";  // appended piecewise (GCC 12 warns falsely on literal + string)
+  name += p.filename().string();
+  name += k_marker;
+  name += host_name();
+  name += '.';
+  name += std::to_string(::getpid());
+  name += '.';
+  name += hex;
+  return (p.parent_path() / name).string();
 }
 
 void write_file_atomically(const std::string& path,

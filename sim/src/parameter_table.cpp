@@ -64,7 +64,10 @@ std::string range_text(const ParameterInfo& info) {
           text += ']';
           return text;
         } else if constexpr (std::is_enum_v<T>) {
-          return "{" + choice_list(info) + "}";
+          std::string text = "{";  // appended piecewise (GCC 12 warns falsely on literal + string)
+          text += choice_list(info);
+          text += '}';
+          return text;
         } else if constexpr (std::is_same_v<T, bool>) {
           return "{false, true}";
         } else {

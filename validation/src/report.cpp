@@ -339,8 +339,10 @@ std::string animation_line(const ReproduceResults& r, const std::vector<std::str
 std::string two_routes_headline(const CorrelationStudy& c) {
   if (c.b_routes.points == 0) return "";
   return fmt::format(
-      "**The paper's b, two ways.** {} With one amplitude for the longitudinal and one for the "
-      "transverse velocity correlation at contact instead of the printed dyad: {}\n\n",
+      "**The paper's b from the cooling rate and at contact.**\n\n"
+      "- The printed ansatz, one b: {}\n"
+      "- One amplitude for the longitudinal and one for the transverse velocity correlation at "
+      "contact, in place of the printed dyad: {}\n\n",
       c.b_routes.statement, c.beta_par_routes.statement);
 }
 
