@@ -361,6 +361,12 @@ std::string gas_point_type(const std::string& mode, std::size_t index) {
   return k_others[index % k_others.size()];
 }
 
+std::string gas_points(const std::string& mode, std::size_t index, const std::string& title) {
+  return "with yerrorbars pointtype " + gas_point_type(mode, index) +
+         " pointsize 1.4*point_scale linecolor rgb " + colour(gas_colour_index(mode, index)) +
+         " linewidth 1 title " + quote(title);
+}
+
 std::size_t gas_colour_index(const std::string& mode, std::size_t index) {
   if (mode == "none") return 1;
   if (mode == "paper") return 2;

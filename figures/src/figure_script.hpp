@@ -77,6 +77,9 @@ std::string dimension_density_title(int dimension, double density);
 /// filled, `flux` open), an open circle for `dsmc`; `index` picks for any other.
 std::string gas_point_type(const std::string& mode, std::size_t index);
 std::size_t gas_colour_index(const std::string& mode, std::size_t index);
+/// "with yerrorbars pointtype … pointsize … linecolor … linewidth 1 title '<title>'": a gas's
+/// points with error bars, in its symbol and colour.
+std::string gas_points(const std::string& mode, std::size_t index, const std::string& title);
 
 /// The title "n = <density>" and the ε range (the points' with 4 % margins) of one panel against ε.
 void set_density_panel(std::string& commands, double density, double eps_min, double eps_max);

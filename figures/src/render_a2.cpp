@@ -78,11 +78,8 @@ RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& op
                         series.restitution[i] + shift});
       const std::string block = prefix + "_s" + std::to_string(s);
       script.data.emplace_back(block, rows);
-      detail::add_plot_element(plot, "$" + block + " using 4:2:3 with yerrorbars pointtype " +
-                                         detail::gas_point_type(series.mode, s) +
-                                         " pointsize 1.3*point_scale linewidth 1 linecolor rgb " +
-                                         detail::colour(detail::gas_colour_index(series.mode, s)) +
-                                         " title " + detail::quote(series.label));
+      detail::add_plot_element(
+          plot, "$" + block + " using 4:2:3 " + detail::gas_points(series.mode, s, series.label));
     }
     detail::set_density_panel(c, panel.density, eps_min, eps_max);
     // Room below the data for the key.

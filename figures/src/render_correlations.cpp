@@ -114,8 +114,10 @@ RenderedFigure render_contact_moments(const std::vector<validation::ContactMomen
                        gas_label(modes[k]));
         ++s;
       }
+    // Room below the data for the key (seven entries).
     script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
-                       "\n  set autoscale\n" + plot + "\n";
+                       "\n  set autoscale\n  set offsets 0, 0, graph 0.05, graph 1.1\n" + plot +
+                       "\n";
     ++p;
   }
   return detail::render(script, options);

@@ -67,9 +67,8 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
                            " linewidth 1 notitle");
         any_fit = true;
       }
-      elements.push_back("$" + block + " using 1:2:3 with yerrorbars pointtype " +
-                         detail::gas_point_type(series.mode, s) + " pointsize 1.4*point_scale " +
-                         colour + " linewidth 1 title " + detail::quote(series.label));
+      elements.push_back("$" + block + " using 1:2:3 " +
+                         detail::gas_points(series.mode, s, series.label));
     }
     if (!panel.theory_A.empty()) {
       detail::Rows theory;
@@ -88,11 +87,9 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
     detail::set_density_panel(c, panel.density, eps_min, eps_max);
     // Leave room above the data for the key.
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.35, graph 0.05\n";
-    c += "  plot ";
-    for (std::size_t k = 0; k < elements.size(); ++k) {
-      c += (k == 0 ? "" : ", \\\n       ") + elements[k];
-    }
-    c += "\n";
+    std::string plot;
+    for (const auto& element : elements) detail::add_plot_element(plot, element);
+    c += plot + "\n";
   }
   return detail::render(script, options);
 }

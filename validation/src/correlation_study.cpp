@@ -244,10 +244,6 @@ std::array<Measurement, 4> contact_quantities(const ContactMomentRow& r) {
   return {r.c1e_c2e, r.c1_dot_c2, r.omega_over_enskog, r.gn2_over_4T};
 }
 
-std::string chaos_gas_name(const std::string& mode) {
-  return mode == "dsmc" ? "DSMC gas" : "flux-shuffled gas";
-}
-
 // A molecular-chaos reference's contact quantities against the Sonine form in full with its
 // measured a2 (a3 = 0 as it is not measured; the theory's a3 ≈ −0.01 would move P by ≈ −2.5e-4,
 // doc/validation.md): χ² of normal scores over all points.
@@ -268,7 +264,7 @@ StudyClaim chaos_values_claim(const CorrelationStudy& S, const std::string& mode
       }
   }
   const double p = chi_square_p_value(chi2, dof);
-  return {chaos_gas_name(mode) + ": contact moments equal their molecular-chaos values",
+  return {gas_name(mode) + ": contact moments equal their molecular-chaos values",
           verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
           fmt::format("chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as "
                       "independent), chi2 = {:.1f}, dof = {}, p = {:.2g}",
@@ -324,7 +320,7 @@ void control_claims(CorrelationStudy& S) {
     const double pv = chi_square_p_value(c, k);
     S.claims.push_back(
         {fmt::format("{}: no velocity correlations at any r (G_par = G_perp = 0)",
-                     std::string(mode) == "flux" ? "flux-shuffled gas" : "original gas"),
+                     gas_name(mode)),
          verdict_p(pv), Measurement{k > 0 ? c / k : 0.0, 0.0},
          fmt::format("chi2/dof over all bins and times, chi2 = {:.1f}, dof = {}, "
                      "p = {:.2g}",

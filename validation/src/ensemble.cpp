@@ -61,6 +61,13 @@ std::string method_name(sim::Method method) {
   return std::string(sim::find_parameter("method")->choices[static_cast<std::size_t>(method)]);
 }
 
+std::string gas_name(const std::string& mode) {
+  if (mode == "none") return "original gas";
+  if (mode == "paper") return "paper-shuffled gas";
+  if (mode == "dsmc") return "DSMC gas";
+  return "flux-shuffled gas";
+}
+
 std::vector<RunKind> run_kinds(const EnsembleSpec& spec) {
   std::vector<RunKind> kinds;
   for (auto method : spec.methods)

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/verdict.hpp"
 
@@ -59,11 +60,6 @@ std::vector<ImpactParameterRow> summarize_impact_parameter(int dimension, double
 }
 
 namespace {
-
-std::string gas_name(const std::string& mode) {
-  if (mode == "none") return "original gas";
-  return mode == "dsmc" ? "DSMC gas" : "flux-shuffled gas";
-}
 
 // Flat at every point of one gas: the points' Pearson χ² summed (each point once: its first bin).
 StudyClaim flatness_claim(const std::vector<ImpactParameterRow>& rows, const std::string& mode) {

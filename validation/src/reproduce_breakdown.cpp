@@ -16,10 +16,6 @@
 namespace molchaos::validation::steps {
 namespace {
 
-std::string gas_name(const std::string& mode) {
-  return mode == "none" ? "original gas" : mode == "paper" ? "paper's shuffle" : "flux shuffle";
-}
-
 // Late window of the break-down: from ln t = 5 (S⊥ of the original gas already ≈ 3) to the end.
 constexpr double k_late_start = 5.0;
 // Early window: the homogeneous start, before any mode has grown visibly (ln t ≤ 3, τ ≲ 4).

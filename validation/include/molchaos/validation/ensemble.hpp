@@ -50,6 +50,9 @@ void validate(const EnsembleSpec& spec);
 
 /// The name of a method as the parameter table spells it ("edmd", "dsmc").
 std::string method_name(sim::Method method);
+/// The gas a row's mode names, as claims print it: "none" original gas, "paper" paper-shuffled
+/// gas, "flux" flux-shuffled gas, "dsmc" DSMC gas.
+std::string gas_name(const std::string& mode);
 
 /// Kinetic-theory τ0 (T0 = 1, b = 0) used to size the runs; +inf at ε = 1.
 double theory_tau0(int dimension, double density, double restitution);
