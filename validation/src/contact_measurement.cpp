@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/validation/haff_estimators.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
 
 namespace molchaos::validation {
@@ -26,9 +27,10 @@ RunContacts measure_contacts(const sim::RunResult& run, const WindowRule& rule) 
     const auto& prev = run.samples[k - 1];
     if (s.t <= a.window.t_start || s.t > a.window.t_stop) continue;
     collisions += s.collisions - prev.collisions;
-    // Enskog's collisions per particle, ∫ω_E(T) dt with ω_E ∝ √T (trapezoid); pairs are N/2 times.
-    enskog_collisions += (s.t - prev.t) * omega_unit *
-                         (std::sqrt(s.temperature) + std::sqrt(prev.temperature)) * 0.5;
+    // Enskog's collisions per particle, ∫ω_E(T) dt with ω_E ∝ √T by the A estimator's rule (the
+    // identity A ∝ 1/(W·Y) then holds run by run); pairs are N/2 times.
+    enskog_collisions +=
+        omega_unit * root_temperature_integral(prev.t, prev.temperature, s.t, s.temperature);
     const auto& c = s.contacts;
     counted += c.count;
     sum_P += c.sum_c1e_c2e;

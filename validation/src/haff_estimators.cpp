@@ -12,15 +12,17 @@ struct Window {
   std::vector<double> t, y;  ///< y = 1/√T
 };
 
-// ∫ √T dt = ∫ dt/y with y linear in t between samples (Haff's law piecewise).
+// ∫ dt/y over one interval with y = 1/√T linear in t (Haff's law).
+double segment_integral(double dt, double y1, double y2) {
+  const double dy = y2 - y1;
+  // ln(y2/y1)/(y2 − y1) → 1/y1 as y2 → y1 (no collision between the samples).
+  return std::fabs(dy) > 1e-9 * y1 ? dt * std::log(y2 / y1) / dy : dt * 2.0 / (y1 + y2);
+}
+
 double integral_of_root_temperature(const Window& w) {
   double sum = 0.0;
-  for (std::size_t i = 0; i + 1 < w.t.size(); ++i) {
-    const double dt = w.t[i + 1] - w.t[i], y1 = w.y[i], y2 = w.y[i + 1];
-    const double dy = y2 - y1;
-    // ln(y2/y1)/(y2 − y1) → 1/y1 as y2 → y1 (no collision between the samples).
-    sum += std::fabs(dy) > 1e-9 * y1 ? dt * std::log(y2 / y1) / dy : dt * 2.0 / (y1 + y2);
-  }
+  for (std::size_t i = 0; i + 1 < w.t.size(); ++i)
+    sum += segment_integral(w.t[i + 1] - w.t[i], w.y[i], w.y[i + 1]);
   return sum;
 }
 
@@ -40,6 +42,10 @@ double line_slope(const Window& w) {
 }
 
 }  // namespace
+
+double root_temperature_integral(double t1, double T1, double t2, double T2) {
+  return segment_integral(t2 - t1, 1.0 / std::sqrt(T1), 1.0 / std::sqrt(T2));
+}
 
 std::string_view to_string(HaffEstimator e) {
   switch (e) {

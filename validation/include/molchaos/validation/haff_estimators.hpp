@@ -39,6 +39,11 @@ inline constexpr HaffEstimator k_haff_estimator = HaffEstimator::integrated;
 
 std::string_view to_string(HaffEstimator e);
 
+/// ∫√T dt between two samples (t1, T1) and (t2, T2) under Haff's law between them, the rule of
+/// the integrated estimator: what every ∫√T dt over a window (Enskog's collision count too) uses,
+/// so that A, ω/ω_E and the energy loss per collision of one run obey A ∝ 1/(ω/ω_E · Y) exactly.
+double root_temperature_integral(double t1, double T1, double t2, double T2);
+
 struct Tau0Estimate {
   bool ok = false;
   std::string message;      ///< why there is no estimate
