@@ -23,7 +23,8 @@ struct RunContacts {
 };
 
 /// Sums the contact statistics of the samples inside the window (sample s covers (s_prev, s]);
-/// W integrates Enskog's frequency over the same intervals (trapezoid in √T).
+/// W integrates Enskog's frequency over the same intervals by the integrated Haff estimator's rule
+/// (root_temperature_integral), so that A ∝ 1/(W·Y) holds run by run.
 /// ok = false if the run has no valid window or no contact statistics.
 RunContacts measure_contacts(const sim::RunResult& run, const WindowRule& rule);
 
