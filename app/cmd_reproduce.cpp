@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "config_file.hpp"
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/validation/report.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/reproduce.hpp"
@@ -31,12 +32,14 @@ struct ReproduceCliOptions {
   int seeds = 0;
   int threads = 0;
   bool figures = true;
+  bool relax_each_run = false;
 };
 
 void run_reproduce(const ReproduceCliOptions& o) {
   auto cfg = o.quick ? validation::ReproduceConfig::quick_look()
                      : validation::ReproduceConfig::paper_scale();
   if (o.seeds > 0) cfg.seeds = o.seeds;
+  if (o.relax_each_run) sim::share_relaxed_states(false);
   require_writable_directory("--out", o.out);
   if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
   validation::SweepOptions sweep;
@@ -134,6 +137,9 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
   cmd->add_flag("!--no-figures", o->figures, "skip rendering");
+  cmd->add_flag("--relax-each-run", o->relax_each_run,
+                "relax every run itself instead of restoring the relaxed state of an earlier run "
+                "with the same N, density and seed (the same results, more CPU)");
   set_callback_with_config(cmd, [o] { run_reproduce(*o); });
 }
 

@@ -15,6 +15,7 @@
 #include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/version.hpp"
 
 namespace molchaos::sim {
@@ -43,6 +44,26 @@ std::string run_layout() {
   return RunEngine::checkpoint_layout() + " sample " + std::to_string(sizeof(Sample));
 }
 
+// The relaxation, or its end state restored from an earlier run of the same key
+// (relaxed_states.hpp): the same state either way, bit for bit.
+template <class RunEngine>
+void relax_or_restore(RunEngine& engine, const Parameters& p) {
+  const bool shared = relaxed_states_shared() && engine.memory_bytes() <= k_largest_kept_state;
+  const std::string key = shared ? relaxed_state_key(p, run_layout<RunEngine>()) : std::string();
+  if (shared)
+    if (const auto state = find_relaxed_state(key)) {
+      CheckpointReader in(*state, "relaxed state " + key);
+      engine.restore_state(in);
+      in.finish();
+      return;
+    }
+  engine.relax(p.relax_collisions_per_particle);
+  if (!shared) return;
+  CheckpointWriter out;
+  engine.save_state(out);
+  keep_relaxed_state(key, out.data());
+}
+
 // Observer: ContactStatistics when the run records them, else NoObserver (nothing per collision).
 // Checkpoints are written and interrupts obeyed only between advance_to() calls (at sample
 // times and at the progress pauses), where stopping changes nothing in the engine's state; with
@@ -65,7 +86,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
   result.stop_reason = StopReason::t_end;
   double done = -std::numeric_limits<double>::infinity();  // last target reached and observed
   if (checkpoints.restart.empty()) {
-    engine.relax(p.relax_collisions_per_particle);
+    relax_or_restore(engine, p);
   } else {
     double saved_t_end = 0;
     CheckpointReader in =
