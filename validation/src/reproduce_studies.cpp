@@ -49,8 +49,8 @@ Claim linear_hydrodynamics_claim(const std::vector<BreakdownRow>& rows, std::str
   for (const auto& b : rows) {
     ComparisonRow row;
     row.quantity = b.quantity;
-    if (std::isfinite(b.predicted)) row.theory = Measurement{b.predicted, 0.0};
-    if (std::isfinite(b.measured)) row.simulation = Measurement{b.measured, b.measured_error};
+    if (std::isfinite(b.predicted)) row.theory.emplace(b.predicted, 0.0);
+    if (std::isfinite(b.measured)) row.simulation.emplace(b.measured, b.measured_error);
     if (row.theory && row.simulation && b.measured_error > 0) {
       const Agreement a = agreement(*row.simulation, *row.theory);
       row.difference_in_se = a.difference_in_se;
