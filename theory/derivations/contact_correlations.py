@@ -42,26 +42,47 @@ def expectation(expr, C, h, u):
     return sp.nsimplify(total)
 
 
+def square(v):
+    return sum(x * x for x in v)
+
+
+def sonine_s2(d, x):
+    return x**2 / 2 - sp.Rational(d + 2, 2) * x + sp.Rational(d * (d + 2), 8)
+
+
+def sonine_s3(d, x):
+    return (-x**3 / 6 + sp.Rational(d + 4, 4) * x**2 - sp.Rational((d + 2) * (d + 4), 8) * x
+            + sp.Rational(d * (d + 2) * (d + 4), 48))
+
+
+class ContactPair:
+    """A colliding pair in d dimensions: C (centre of mass), h (g transverse to e), u = -g.e > 0,
+    c1 = C + g/2, c2 = C - g/2 with e along x, and the quantities P, Q, Y averaged at contact."""
+
+    def __init__(self, d):
+        self.u = sp.symbols("u", positive=True)
+        self.C = sp.symbols(f"C1:{d + 1}", real=True)
+        self.h = sp.symbols(f"h1:{d}", real=True)
+        g = [-self.u] + list(self.h)
+        self.c1 = [self.C[i] + g[i] / 2 for i in range(d)]
+        self.c2 = [self.C[i] - g[i] / 2 for i in range(d)]
+        self.P = self.c1[0] * self.c2[0]
+        self.Q = sum(self.c1[i] * self.c2[i] for i in range(d))
+        self.Y = self.u * self.u / 2
+
+    def expectation(self, expr):
+        return expectation(expr, self.C, self.h, self.u)
+
+
 def contact_table(d):
     a2, bp, bt = sp.symbols("a2 b_par b_perp")
-    u = sp.symbols("u", positive=True)
-    C = sp.symbols(f"C1:{d + 1}", real=True)
-    h = sp.symbols(f"h1:{d}", real=True)
-    g = [-u] + list(h)
-    c1 = [C[i] + g[i] / 2 for i in range(d)]
-    c2 = [C[i] - g[i] / 2 for i in range(d)]
-    sq = lambda v: sum(x * x for x in v)
-    S2 = lambda x: x**2 / 2 - sp.Rational(d + 2, 2) * x + sp.Rational(d * (d + 2), 8)
-    P = c1[0] * c2[0]
-    Q = sum(c1[i] * c2[i] for i in range(d))
-    Y = u * u / 2
-    weight = (1 + a2 * (S2(sq(c1)) + S2(sq(c2)))) * (1 + bp * P + bt * (Q - P))
-    E = lambda X: expectation(X * weight, C, h, u)
-    norm = E(1)
-    rows = {}
-    for name, X in (("P", P), ("Q", Q), ("Y", Y)):
-        avg = E(X) / norm
-        rows[name] = avg
+    pair = ContactPair(d)
+    P, Q = pair.P, pair.Q
+    weight = ((1 + a2 * (sonine_s2(d, square(pair.c1)) + sonine_s2(d, square(pair.c2))))
+              * (1 + bp * P + bt * (Q - P)))
+    norm = pair.expectation(weight)
+    rows = {name: pair.expectation(X * weight) / norm
+            for name, X in (("P", P), ("Q", Q), ("Y", pair.Y))}
     rows["W"] = norm
 
     def first_order(f):
@@ -77,34 +98,24 @@ def contact_table(d):
 def molecular_chaos_sonine(d):
     """P, Q, W, Y under molecular chaos with f = phi (1 + a2 S2 + a3 S3), all orders."""
     a2, a3 = sp.symbols("a2 a3")
-    u = sp.symbols("u", positive=True)
-    C = sp.symbols(f"C1:{d + 1}", real=True)
-    h = sp.symbols(f"h1:{d}", real=True)
-    g = [-u] + list(h)
-    c1 = [C[i] + g[i] / 2 for i in range(d)]
-    c2 = [C[i] - g[i] / 2 for i in range(d)]
-    sq = lambda v: sum(x * x for x in v)
-    S2 = lambda x: x**2 / 2 - sp.Rational(d + 2, 2) * x + sp.Rational(d * (d + 2), 8)
-    S3 = lambda x: (-x**3 / 6 + sp.Rational(d + 4, 4) * x**2 - sp.Rational((d + 2) * (d + 4), 8) * x
-                    + sp.Rational(d * (d + 2) * (d + 4), 48))
-    f = lambda c: 1 + a2 * S2(sq(c)) + a3 * S3(sq(c))
-    weight = f(c1) * f(c2)
-    norm = expectation(weight, C, h, u)
+    pair = ContactPair(d)
+    f = lambda c: 1 + a2 * sonine_s2(d, square(c)) + a3 * sonine_s3(d, square(c))
+    weight = f(pair.c1) * f(pair.c2)
+    norm = pair.expectation(weight)
     rows = {"W": sp.factor(norm)}
-    for name, X in (("P", c1[0] * c2[0]), ("Q", sum(c1[i] * c2[i] for i in range(d))),
-                    ("Y", u * u / 2)):
-        rows[name] = sp.factor(expectation(X * weight, C, h, u) / norm)
+    for name, X in (("P", pair.P), ("Q", pair.Q), ("Y", pair.Y)):
+        rows[name] = sp.factor(pair.expectation(X * weight) / norm)
     return rows
 
 
 if __name__ == "__main__":
     for d in (2, 3):
         print(f"d = {d}: quantity: value at a2 = b = 0, d/da2, d/db_par, d/db_perp")
-        for name, (v, da2, dpar, dperp) in contact_table(d).items():
+        t = contact_table(d)
+        for name, (v, da2, dpar, dperp) in t.items():
             print(f"  {name}: {v}, {da2}, {dpar}, {dperp}")
         for k in (3, d):
             # paper's dyad: b_par = (k - 1) b, b_perp = -b
-            t = contact_table(d)
             slopes = {n: sp.nsimplify((k - 1) * r[2] - r[3]) for n, r in t.items()}
             print(f"  dyad factor {k}: d/db of P, Q, W, Y =", slopes["P"], slopes["Q"],
                   slopes["W"], slopes["Y"], " d ln(W Y)/db =", slopes["W"] + slopes["Y"])
