@@ -375,12 +375,15 @@ std::size_t gas_colour_index(const std::string& mode, std::size_t index) {
   return 4 + index;
 }
 
+Canvas row_of_panels(std::size_t panels, int png_height, double pdf_height) {
+  const std::size_t across = std::min<std::size_t>(panels, 3);
+  return {static_cast<int>(across * 800), png_height, static_cast<double>(across) * 3.6,
+          pdf_height};
+}
+
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position) {
-  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(panels, 3) * 800);
-  script.canvas.png_height = 760;
-  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(panels, 3)) * 3.6;
-  script.canvas.pdf_height = 3.4;
+  script.canvas = row_of_panels(panels);
   std::string& c = script.commands;
   c += "  set multiplot layout 1," + std::to_string(panels);
   if (!title.empty()) c += " title " + quote(title);

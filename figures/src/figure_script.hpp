@@ -88,6 +88,13 @@ void set_density_panel(std::string& commands, double density, double eps_min, do
 /// not hide one another: a few thousandths of the panel's ε span, centred on zero.
 double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max);
 
+/// The canvas of a row of `panels` plots (at most three across): 800 px and 3.6 in per panel.
+Canvas row_of_panels(std::size_t panels, int png_height = 760, double pdf_height = 3.4);
+
+/// Light grid lines at the tics and short error-bar ends: panels full of error bars.
+inline constexpr const char* k_light_grid_small_bars =
+    "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+
 /// Canvas and common settings of a row of `panels` plots against ε (Fig. 4, b(ε)).
 void begin_epsilon_panels(FigureScript& script, std::size_t panels, const std::string& title,
                           const std::string& ylabel, const std::string& key_position);

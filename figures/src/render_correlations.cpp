@@ -48,7 +48,7 @@ RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrel
                      ", ε = " + detail::label_number(restitution)) +
        "\n";
   c += "  set logscale x\n  set xlabel 'r/σ'\n  set key top right font font_small box opaque\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  c += detail::k_light_grid_small_bars;
   for (int which = 0; which < 2; ++which) {
     c += std::string("  set ylabel ") + (which == 0 ? "'G_{∥}(r)'" : "'G_{⊥}(r)'") + "\n";
     std::string plot = "  plot 0 with lines linecolor rgb 'black' dashtype 2 notitle";

@@ -27,17 +27,14 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
       "collisions per bin of s over its molecular-chaos value 1/bins, minus 1 (mean over runs).\n"
       "Blocks: bin centre of s, fraction*bins - 1, error.";
   const std::size_t n_panels = panels.size();
-  script.canvas.png_width = static_cast<int>(std::min<std::size_t>(n_panels, 3) * 800);
-  script.canvas.png_height = 820;
-  script.canvas.pdf_width = static_cast<double>(std::min<std::size_t>(n_panels, 3)) * 3.6;
-  script.canvas.pdf_height = 3.7;
+  script.canvas = detail::row_of_panels(n_panels, 820, 3.7);  // taller: room for the key
   std::string& c = script.commands;
   c += "  set multiplot layout 1," + std::to_string(n_panels) +
        " title 'impact parameter: departure from flat (molecular chaos = 0); filled, solid: "
        "original gas; open, dashed: flux shuffle'\n";
   c += "  set xlabel 's (0 head-on, 1 grazing)'\n  set ylabel 'fraction · bins − 1'\n";
   c += "  set xrange [0:1]\n  set key top left font font_small box opaque maxrows 6\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  c += detail::k_light_grid_small_bars;
   std::size_t p = 0;
   for (const auto& [d, n] : panels) {
     std::string plot = "  plot 0 with lines linecolor rgb 'black' dashtype 2 notitle";

@@ -104,7 +104,7 @@ RenderedFigure render_structure_factors(const std::vector<validation::StructureF
        detail::quote("d = 2, n = " + detail::label_number(gases.spec.density) +
                      ", ε = " + detail::label_number(gases.spec.restitution)) +
        "\n";
-  c += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  c += detail::k_light_grid_small_bars;
   linear_theory_panel(script, curves);
   gases_panel(script, gases, false);
   gases_panel(script, gases, true);
@@ -126,7 +126,7 @@ RenderedFigure render_linear_hydrodynamics(
   script.canvas.png_height = 760;
   script.canvas.pdf_width = 5.0;
   script.canvas.pdf_height = 3.8;
-  script.commands += "  set grid xtics ytics linecolor rgb '#dddddd'\n  set bars small\n";
+  script.commands += detail::k_light_grid_small_bars;
   linear_theory_panel(script, curves, title + ": ");
   return detail::render(script, options);
 }
