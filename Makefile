@@ -17,9 +17,13 @@ PACKAGES := cmake g++ make git pkg-config ca-certificates python3 python3-sympy 
             pybind11-dev python3-dev python3-numpy python3-pandas python3-pytest python3-scipy \
             python3-matplotlib libhdf5-dev python3-h5py python3-ase
 
-.PHONY: all deps configure build build-app test test-all reproduce bench clean format
+.PHONY: all deps packages configure build build-app test test-all reproduce bench clean format
 
 all: build
+
+# The list, one line (for an administrator: apt-get install --no-install-recommends $(make -s packages)).
+packages:
+	@echo $(PACKAGES)
 
 deps:
 	@missing=""; for p in $(PACKAGES); do \
