@@ -315,7 +315,10 @@ void Engine<D, Observer>::predict(std::int32_t i) {
     stencil_of(i, x, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
     const std::int32_t count = gather<stencil_size<D>()>(stencil);
-    earliest<Prefetch>(i, candidates_.data(), count, best, partner);
+    if (interior_cell(x))
+      earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
+    else
+      earliest<Prefetch, true>(i, candidates_.data(), count, best, partner);
   }
   ev_[i].coll_time = best;
   ev_[i].partner = partner;
@@ -437,7 +440,8 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   file_in_cell(i, c);
 
   int slab[slab_size<D>()];
-  if (interior_cell(x)) {  // no periodic wrap: fixed offsets
+  const bool interior = interior_cell(x);
+  if (interior) {  // no periodic wrap: fixed offsets
     const int* offset = slab_offset_[2 * axis + up].data();
     for (int s = 0; s < slab_size<D>(); ++s) slab[s] = c + offset[s];
   } else {
@@ -446,7 +450,10 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   double best = ev_[i].coll_time;
   std::int32_t partner = -1;
   const std::int32_t count = gather<slab_size<D>()>(slab);
-  earliest<Prefetch>(i, candidates_.data(), count, best, partner);
+  if (interior)
+    earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
+  else
+    earliest<Prefetch, true>(i, candidates_.data(), count, best, partner);
   // best is the old collision time unless a new partner was found (selects, no branch).
   ev_[i].coll_time = best;
   // Masks instead of selects, which the compiler turned into (mispredicted) branches.

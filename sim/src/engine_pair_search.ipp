@@ -38,8 +38,12 @@ template <int D, class Observer>
 // root is computed for every pair and replaced by +inf unless b < 0 and disc >= 0; the periodic
 // wrap adds or subtracts a masked box length instead of branching, which can only change the sign
 // of a zero component. collide() recomputes b with the scalar loop; the two can then differ at
-// most in the sign of a zero b, which both treat as "not approaching".
+// most in the sign of a zero b, which both treat as "not approaching". Wrap = false leaves the
+// wrap out (12 of a pass's operations in d = 2): for the stencil of a cell off the box boundary,
+// whose members lie less than two cell widths, so less than half the box, from i along every axis,
+// where the minimum image is the plain difference.
 template <int D, class Observer>
+template <bool Wrap>
 [[gnu::always_inline]] inline __m128d Engine<D, Observer>::pair_times(std::int32_t i, std::int32_t j1,
                                                             std::int32_t j2) const {
   const Particle& pi = part_[i];
@@ -55,8 +59,10 @@ template <int D, class Observer>
     const __m128d rj = _mm_loadh_pd(_mm_load_sd(&p1.r[a]), &p2.r[a]);
     const __m128d vj = _mm_loadh_pd(_mm_load_sd(&p1.v[a]), &p2.v[a]);
     __m128d d = _mm_sub_pd(_mm_set1_pd(pi.r[a]), _mm_add_pd(rj, _mm_mul_pd(vj, dtj)));
-    d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
-    d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
+    if constexpr (Wrap) {
+      d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
+      d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
+    }
     const __m128d dv = _mm_sub_pd(_mm_set1_pd(pi.v[a]), vj);
     if (a == 0) {  // the scalar sums start with the x terms
       b = _mm_mul_pd(d, dv);
@@ -113,13 +119,14 @@ template <int Count>
   return k;
 }
 
-// The earliest collision of i (at clock_.now) with the listed candidates after `best`: updates best and
-// partner. Branch-free selection; candidates in list order, the first of equal times wins.
+// The earliest collision of i (at clock_.now) with the listed candidates after `best`: updates
+// best and partner; Wrap = false when no candidate can be nearer through the periodic boundary
+// (pair_times()). Branch-free selection; candidates in list order, the first of equal times wins.
 // list[count] must be writable: an odd list is padded there with i itself (its pair time with
 // itself is +inf), so that one loop of pairs does all, without a remainder loop whose trip count
 // the branch predictor would have to guess.
 template <int D, class Observer>
-template <bool Prefetch>
+template <bool Prefetch, bool Wrap>
 [[gnu::always_inline]] inline void Engine<D, Observer>::earliest(std::int32_t i, std::int32_t* list,
                                                        std::int32_t count, double& best,
                                                        std::int32_t& partner) const {
@@ -132,7 +139,7 @@ template <bool Prefetch>
   for (std::int32_t k = 0; k < count; k += 2) {  // two partners per pass, one in each half
     const std::int32_t j1 = list[k], j2 = list[k + 1];
     double t[2];
-    _mm_storeu_pd(t, pair_times(i, j1, j2));
+    _mm_storeu_pd(t, pair_times<Wrap>(i, j1, j2));
     p = t[0] < b ? j1 : p;
     b = t[0] < b ? t[0] : b;
     p = t[1] < b ? j2 : p;

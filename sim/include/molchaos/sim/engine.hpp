@@ -151,11 +151,12 @@ class Engine {
   // in cross_cell() (3 % more instructions per collision in the paper's case).
   [[gnu::always_inline]] double pair_time(std::int32_t i, std::int32_t j) const;
 #if defined(__SSE2__)
+  template <bool Wrap>
   [[gnu::always_inline]] __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
 #endif
   template <int Count>
   [[gnu::always_inline]] std::int32_t gather(const int* cells);
-  template <bool Prefetch>
+  template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
                                        double& best, std::int32_t& partner) const;
   [[gnu::always_inline]] bool interior_cell(const int* x) const;
