@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <set>
 
@@ -172,6 +173,9 @@ void add_config_option(CLI::App* cmd, std::string& path) {
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
   const bool csv = ends_with(path, ".csv");
+  // The key that set each option: a second key for the same option (repeated, or spelled both
+  // as the parameter name and as the flag) would otherwise be dropped without a word.
+  std::map<const CLI::Option*, std::string> set_by;
   for (const auto& [key, values] : read_config_file(path)) {
     CLI::Option* op = option_of(cmd, key);
     if (op == nullptr || !op->get_configurable()) {
@@ -180,6 +184,11 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       throw UsageError("--config", path + ": unknown key '" + key + "' for " + cmd->get_name() +
                                        "; allowed: " + allowed_keys(cmd));
     }
+    if (const auto first = set_by.find(op); first != set_by.end())
+      throw UsageError("--config", path + ": key '" + key + "' sets " + op->get_name() +
+                                       " again (first as '" + first->second +
+                                       "'); give each option once");
+    set_by.emplace(op, key);
     if (op->count() > 0 || values.empty()) continue;  // given on the command line, or empty
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false

@@ -52,6 +52,11 @@ refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is ou
   simulate --config range.toml
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
+printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
+refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
+  simulate --config twice.toml
+printf 'dimension = 3\ndim = 2\n' >aliases.toml
+refused "aliases.toml: key 'dim' sets --dim again \(first as 'dimension'\)" simulate --config aliases.toml
 printf '[simulate]\ndensity = 0.1\n' >table.toml
 refused "table.toml line 1: tables are not used" simulate --config table.toml
 printf 'seeds = 0\n' >seeds.toml
