@@ -13,6 +13,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
@@ -192,6 +194,24 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
     } catch (const std::exception& e) {
       throw UsageError(flag, e.what());
     }
+  }
+}
+
+/// Throws UsageError(flag, ...) if two of the (flag, path) outputs name one file (empty paths are
+/// skipped): the output written last would replace the other without a word.
+inline void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
+  for (const auto& [flag, path] : files) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    fs::path file = fs::weakly_canonical(fs::absolute(path), ec);  // through "..", "." and links
+    if (ec) file = fs::absolute(path).lexically_normal();
+    for (const auto& [other, owner] : seen)
+      if (other == file)
+        throw UsageError(flag, "'" + path + "' is also the file of " + owner +
+                                   "; give each output its own file");
+    seen.emplace_back(file, flag);
   }
 }
 

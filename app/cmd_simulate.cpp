@@ -14,6 +14,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -98,6 +100,23 @@ void run_simulate(const SimulateOptions& options) {
   }
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
+  {
+    // Every file the run writes, and the checkpoint it continues (which only --checkpoint may
+    // replace: the usual way to go on from where a run stopped).
+    std::vector<std::pair<std::string, std::string>> files{{"--out", options.out}};
+    for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
+      files.emplace_back("--out (its snapshot " + std::to_string(k) + ")",
+                         snapshot_path(options.out, k));
+    files.insert(files.end(), {{"--trajectory", options.trajectory},
+                               {"--xyz", options.xyz},
+                               {"--pair-correlations", options.pair_correlations},
+                               {"--write-config", options.write_config},
+                               {"--checkpoint", checkpoints.path}});
+    require_distinct_files(files);
+    files.pop_back();
+    files.emplace_back("--restart", checkpoints.restart);
+    require_distinct_files(files);
+  }
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
     throw UsageError("--checkpoint-interval", "needs --checkpoint FILE");
   if (!checkpoints.restart.empty() && !std::filesystem::is_regular_file(checkpoints.restart))
