@@ -130,11 +130,10 @@ ConfigItems read_csv_header(std::istream& in) {
   return items;
 }
 
-// The option of `key` in cmd: a parameter table name's flag, else --key, else --key with '_'
-// as '-'. nullptr when none.
+// The option of `key` in cmd: the flag of a field name (a parameter table name, a sweep's
+// t_end_in_tau0), else --key, else --key with '_' as '-'. nullptr when none.
 CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
-  if (const sim::ParameterInfo* info = sim::find_parameter(key))
-    if (CLI::Option* op = cmd->get_option_no_throw(std::string(info->flag))) return op;
+  if (CLI::Option* op = cmd->get_option_no_throw(flag_of_field(key))) return op;
   if (CLI::Option* op = cmd->get_option_no_throw("--" + key)) return op;
   std::string dashed = key;
   std::replace(dashed.begin(), dashed.end(), '_', '-');

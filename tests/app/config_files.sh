@@ -33,9 +33,12 @@ TOML
 "$bin" sweep --config sweep.toml --cache cache --out sweep.csv --threads 1 >/dev/null 2>&1 ||
   fail "sweep from a file"
 [ "$(grep -c '^0\.[05]*1*,' sweep.csv)" -eq 4 ] || fail "sweep.csv lacks the 4 state points"
+"$bin" sweep --config sweep.csv --cache cache --out again.csv --threads 1 >/dev/null 2>&1 ||
+  fail "sweep from its summary"
+cmp sweep.csv again.csv || fail "the sweep repeated from its summary's header differs"
 printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
 "$bin" theory --config theory.toml | grep -q '"restitution": 0.8' || fail "theory from a file"
-echo "ok: sweep and theory read their options from files"
+echo "ok: sweep and theory read their options from files; a sweep repeats from its summary"
 
 failures=0
 refused() {  # refused REGEX ARGS...

@@ -163,8 +163,14 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
                        s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
-    // Like a run's header: the method line only when it is not the default (edmd alone); a
-    // list space separated, as --config reads it.
+    // The state points and modes as listed, so that `sweep --config summary.csv` repeats the
+    // sweep; lists space separated, as --config reads them.
+    std::vector<std::string> modes;
+    for (auto m : s.modes) modes.emplace_back(sim::to_string(m));
+    out << fmt::format("# density = {}\n# restitution = {}\n# randomize = {}\n",
+                       fmt::join(s.densities, " "), fmt::join(s.restitutions, " "),
+                       fmt::join(modes, " "));
+    // Like a run's header: the method line only when it is not the default (edmd alone).
     if (s.methods != std::vector<sim::Method>{sim::Method::edmd}) {
       std::vector<std::string> names;
       for (auto m : s.methods) names.push_back(method_name(m));
