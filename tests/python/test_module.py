@@ -93,7 +93,8 @@ def test_simulate_is_reproducible_and_cools():
 
 @pytest.mark.parametrize("name,value", [("restitution", 1.5), ("density", 5.0),
                                         ("particles", 1), ("t_end", -1.0),
-                                        ("relax_collisions_per_particle", 1e30)])
+                                        ("relax_collisions_per_particle", 1e30),
+                                        ("snapshot_times", [3.0, 1.0])])
 def test_simulate_bad_parameter_names_it(name, value):
     kwargs = dict(SMALL)
     kwargs[name] = value
