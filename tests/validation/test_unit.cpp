@@ -273,6 +273,31 @@ BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   BOOST_TEST(std::isnan(s.mean_dyad.value));
 }
 
+// An elastic run without a collision (t_end shorter than a mean free time) measures no collision
+// frequency: the point is not measured (nan) and the run counted as failed, not 0 ± 0.
+BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
+  EnsembleSpec spec;
+  spec.particles = 100;
+  spec.restitutions = {1.0};
+  spec.seeds = 2;
+  spec.t_end_elastic = 1e-9;
+  std::vector<RunOutcome> runs(2);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    runs[i].ok = true;
+    runs[i].result.parameters = expand(spec)[i];
+    runs[i].result.collisions = 0;
+    runs[i].result.samples.resize(2);
+    runs[i].result.samples[1].t = 1e-9;
+  }
+  const auto points = summarize(spec, runs, WindowRule{});
+  BOOST_TEST_REQUIRE(points.size() == 1u);
+  BOOST_TEST(points[0].summary.runs == 0);
+  BOOST_TEST(points[0].summary.failed == 2);
+  BOOST_TEST(std::isnan(points[0].collision_ratio.value));
+  BOOST_TEST(points[0].summary.messages.at(0).find("no collision by t_end = 1e-09") !=
+             std::string::npos);
+}
+
 // The report page embeds an animation as a GIF data URI and a still figure as a PNG one.
 BOOST_AUTO_TEST_CASE(report_html_embeds_gif_and_png_by_type) {
   namespace fs = std::filesystem;

@@ -121,6 +121,17 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
             errors.push_back(runs[k].error);
             continue;
           }
+          // An elastic run without a collision measures no frequency (0 ± 0 from every seed
+          // would read as a measurement): it counts as failed, as a cooling run that ends before
+          // its transient does.
+          if (eps >= 1.0 && runs[k].result.collisions == 0) {
+            ++failed_runs;
+            errors.push_back(fmt::format(
+                "seed {}: no collision by t_end = {}, so no collision frequency (lengthen the run, "
+                "--t-end-elastic)",
+                runs[k].result.parameters.seed, runs[k].result.parameters.t_end));
+            continue;
+          }
           group.push_back(&runs[k].result);
           if (eps >= 1.0) ratios.push_back(collision_frequency_ratio(runs[k].result));
         }
