@@ -135,6 +135,12 @@ void run_simulate(const SimulateOptions& options) {
         throw UsageError(flag,
                          "not allowed with --method dsmc (it has no positions); allowed "
                          "with --method edmd");
+  // Configurations are written at --snapshot-times only: without them there is nothing to write
+  // (and HDF5 refuses the empty list), found only after the whole run.
+  for (const auto& [flag, path] :
+       {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
+    if (!path->empty() && p.snapshot_times.empty())
+      throw UsageError(flag, "needs --snapshot-times (the times of the configurations to write)");
   if (p.method == sim::Method::dsmc)
     for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
                                      std::pair{"--restart", &checkpoints.restart}})
