@@ -43,12 +43,20 @@ struct SimulateOptions {
   sim::CheckpointOptions checkpoints;
 };
 
-// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end.
+// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end;
+// during the relaxation, which has no checkpoint, they end the process at once as without the
+// handler (the run sets g_under_way when the relaxation is done).
 std::atomic<bool> g_interrupt{false};
+std::atomic<bool> g_under_way{false};
 volatile std::sig_atomic_t g_signal = 0;
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
 extern "C" void request_checkpoint(int signal) {
+  if (!g_under_way.load()) {
+    std::signal(signal, SIG_DFL);  // both async-signal-safe
+    std::raise(signal);
+    return;
+  }
   g_signal = signal;
   g_interrupt.store(true);
 }
@@ -68,6 +76,7 @@ std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
   if (!checkpoints.path.empty()) {
     install_checkpoint_signals();
     checkpoints.interrupt = &g_interrupt;
+    checkpoints.under_way = &g_under_way;
   }
   try {
     return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
