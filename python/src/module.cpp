@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
@@ -108,7 +110,9 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     }
     if (name == "checkpoint_interval") {
       checkpoints.interval = keyword_as<double>(name, v);
-      if (!(checkpoints.interval >= 0)) throw py::value_error("checkpoint_interval: must be >= 0");
+      if (!(checkpoints.interval >= 0 && std::isfinite(checkpoints.interval)))
+        throw py::value_error("checkpoint_interval: value " + py::repr(v).cast<std::string>() +
+                              " is outside the allowed range [0, inf)");
       continue;
     }
     if (name == "restart") {
@@ -138,6 +142,13 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
   }
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
+  if (!checkpoints.path.empty()) {
+    try {
+      sim::probe_writable(checkpoints.path);  // now, not at the first checkpoint after the work
+    } catch (const std::exception& e) {
+      throw py::value_error(std::string("checkpoint: ") + e.what());
+    }
+  }
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {

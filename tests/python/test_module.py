@@ -128,6 +128,14 @@ def test_simulate_unknown_keyword():
         molchaos.simulate(restitutoin=0.9)
 
 
+def test_simulate_refuses_an_unwritable_checkpoint_before_the_run():
+    # Refused before the run, as by the CLI, not at the first checkpoint after part of the work.
+    with pytest.raises(ValueError, match="checkpoint: cannot create a file next to /proc/run.ckpt"):
+        molchaos.simulate(**SMALL, checkpoint="/proc/run.ckpt", checkpoint_interval=1.0)
+    with pytest.raises(ValueError, match=r"checkpoint_interval: value inf is outside .*\[0, inf\)"):
+        molchaos.simulate(**SMALL, checkpoint="run.ckpt", checkpoint_interval=float("inf"))
+
+
 def test_simulate_refuses_dim_and_dimension_together():
     with pytest.raises(TypeError, match="'dimension' and 'dim' for the same parameter"):
         molchaos.simulate(**SMALL, dimension=3)  # SMALL has dim=2
