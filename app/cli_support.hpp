@@ -2,9 +2,11 @@
 // range, and the usage-error type that main() turns into exit status 2 with one line on stderr.
 #pragma once
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -195,6 +197,17 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
       throw UsageError(flag, e.what());
     }
   }
+}
+
+/// Throws UsageError(flag, ...) if a value of a list option (state points, N values, modes) is
+/// listed twice: its runs would be counted twice, as if independent.
+template <class T>
+void reject_repeated_values(const std::string& flag, std::vector<T> values,
+                            const std::string& remedy) {
+  std::sort(values.begin(), values.end());
+  const auto repeated = std::adjacent_find(values.begin(), values.end());
+  if (repeated != values.end())
+    throw UsageError(flag, fmt::format("value {} is listed twice; {}", *repeated, remedy));
 }
 
 /// Throws UsageError(flag, ...) if two of the (flag, path) outputs name one file (empty paths are

@@ -266,6 +266,8 @@ void bench_simulation(const BenchOptions& o) {
 
 void run_bench(const BenchOptions& o) {
   if (!o.theory && !o.simulation) throw UsageError("bench", "choose --theory and/or --simulation");
+  reject_repeated_values("--particles", o.particles,
+                         "each N once (the pooled scatter takes every N's runs as independent)");
   require_usable_directory("--out", o.out);  // created, and a file written in it, before the work
   if (o.theory) bench_theory(o);
   if (o.simulation) bench_simulation(o);
