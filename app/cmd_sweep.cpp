@@ -74,10 +74,9 @@ void run_sweep_command(SweepCliOptions& o) {
     failed += s.failed;
     if (s.restitution >= 1.0) {
       std::cout << fmt::format(
-          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs){}\n",
-          s.density, s.restitution, validation::method_name(p.method), s.mode,
-          p.collision_ratio.value, p.collision_ratio.error, s.runs,
-          s.runs == 0 ? "  (not measured: no run succeeded)" : "");
+          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs){}\n", s.density,
+          s.restitution, validation::method_name(p.method), s.mode, p.collision_ratio.value,
+          p.collision_ratio.error, s.runs, s.runs == 0 ? "  (not measured: no run succeeded)" : "");
       for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
       continue;
     }
