@@ -110,6 +110,7 @@ ConfigItems read_csv_header(std::istream& in) {
   ConfigItems items;
   std::string line;
   while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (line.back() == '\r') line.pop_back();  // a file saved with Windows line ends
     const auto eq = line.find(" = ");
     if (eq == std::string::npos || line.size() < 2) continue;
     const std::string key = trim(line.substr(1, eq - 1));

@@ -16,7 +16,10 @@ cmp run.csv again.csv || fail "the run repeated from its CSV header differs"
 cmp run.snapshot1.csv again.snapshot1.csv || fail "its snapshot differs"
 "$bin" simulate --config run.toml --out toml.csv --quiet 2>/dev/null || fail "run from run.toml"
 cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differs"
-echo "ok: a run repeated from its CSV and from its TOML, byte for byte"
+sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends
+"$bin" simulate --config crlf.csv --out crlf_again.csv --quiet 2>/dev/null || fail "run from crlf.csv"
+cmp run.csv crlf_again.csv || fail "the run repeated from its CSV with CRLF line ends differs"
+echo "ok: a run repeated from its CSV (LF or CRLF) and from its TOML, byte for byte"
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
 grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
