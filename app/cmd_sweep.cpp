@@ -73,10 +73,14 @@ void run_sweep_command(SweepCliOptions& o) {
     const auto& s = p.summary;
     failed += s.failed;
     if (s.restitution >= 1.0) {
+      // As for A below: one run has no standard error.
       std::cout << fmt::format(
-          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs){}\n", s.density,
+          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {}  ({} runs){}\n", s.density,
           s.restitution, validation::method_name(p.method), s.mode, p.collision_ratio.value,
-          p.collision_ratio.error, s.runs, s.runs == 0 ? "  (not measured: no run succeeded)" : "");
+          s.runs >= 2 ? fmt::format("{:.5f}", p.collision_ratio.error) : "-", s.runs,
+          s.runs >= 2   ? ""
+          : s.runs == 0 ? "  (not measured: no run succeeded)"
+                        : "  (no error bar: fewer than 2 runs)");
       for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
       continue;
     }

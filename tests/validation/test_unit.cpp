@@ -1,6 +1,8 @@
 // validation/: the Haff fit on exact data, the window rule, straight-line fits, ensemble
 // statistics, seeds, and the cache (round trip, corrupt entries recomputed).
 #define BOOST_TEST_MODULE validation_unit
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -296,6 +298,34 @@ BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
   BOOST_TEST(std::isnan(points[0].collision_ratio.value));
   BOOST_TEST(points[0].summary.messages.at(0).find("no collision by t_end = 1e-09") !=
              std::string::npos);
+}
+
+// The summary CSV of a point with one run: the values, but no standard errors (nan, not 0).
+BOOST_AUTO_TEST_CASE(summary_of_one_run_has_no_error_bars) {
+  EnsembleSpec spec;
+  spec.restitutions = {0.9, 1.0};
+  spec.seeds = 1;
+  std::vector<PointResult> points(2);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i].summary.density = 0.05;
+    points[i].summary.restitution = spec.restitutions[i];
+    points[i].summary.mode = "none";
+    points[i].summary.runs = 1;
+  }
+  points[0].summary.A = {20.5, 0.0};
+  points[0].A_theory = {21.3, 2.5e-14};
+  points[1].collision_ratio = {1.01, 0.0};
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("molchaos_summary_" + std::to_string(::getpid()) + ".csv");
+  write_summary_csv(spec, points, "test", path.string());
+  std::ifstream in(path);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("0.05,")) rows.push_back(line);
+  std::filesystem::remove(path);
+  BOOST_TEST_REQUIRE(rows.size() == 2u);
+  BOOST_TEST(rows[0].starts_with("0.05,0.9,edmd,none,20.5,nan,1,0,21.3,2.5e-14,0,nan,0,nan,"));
+  BOOST_TEST(rows[1].ends_with(",1.01,nan"));
 }
 
 // The report page embeds an animation as a GIF data URI and a still figure as a PNG one.

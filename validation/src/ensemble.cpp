@@ -188,19 +188,25 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
       out << "# method = " << fmt::format("{}", fmt::join(names, " ")) << "\n";
     }
     out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
-           "succeeded (runs = 0, failed = their number)\n";
+           "succeeded (runs = 0, failed = their number); their errors are nan where fewer than 2 "
+           "runs succeeded (no standard error)\n";
     out << "density,restitution,method,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";
     for (const auto& p : points) {
       const auto& m = p.summary;
+      // One run has no scatter: its standard error is unknown, not 0.
+      const auto error = [&m](double e) {
+        return m.runs >= 2 ? e : std::numeric_limits<double>::quiet_NaN();
+      };
       out << fmt::format(
           "{},{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},"
           "{:.3g},{:.8g},{:.3g}\n",
-          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, m.A.error, m.runs,
-          m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value, m.mean_dyad.error,
-          m.a2.value, m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
-          p.collision_ratio.value, p.collision_ratio.error);
+          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, error(m.A.error),
+          m.runs, m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value,
+          error(m.mean_dyad.error), m.a2.value, error(m.a2.error), m.breakdowns,
+          m.breakdown_time.value, m.breakdown_time.error, p.collision_ratio.value,
+          error(p.collision_ratio.error));
     }
   });
 }
