@@ -14,9 +14,9 @@
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/haff_fit.hpp"
-#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/sweep.hpp"
 
