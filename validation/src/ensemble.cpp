@@ -195,10 +195,7 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
            "collision_ratio,collision_ratio_err\n";
     for (const auto& p : points) {
       const auto& m = p.summary;
-      // One run has no scatter: its standard error is unknown, not 0.
-      const auto error = [&m](double e) {
-        return m.runs >= 2 ? e : std::numeric_limits<double>::quiet_NaN();
-      };
+      const auto error = [&m](double e) { return error_of_runs(e, m.runs); };
       out << fmt::format(
           "{},{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},"
           "{:.3g},{:.8g},{:.3g}\n",
