@@ -157,11 +157,8 @@ void run_simulate(const SimulateOptions& options) {
         throw UsageError(flag, "not allowed with --method dsmc (its runs take seconds); allowed "
                                "with --method edmd");
 
-  if (!options.write_config.empty()) {
+  if (!options.write_config.empty())
     require_writable_file("--write-config", options.write_config, false);
-    sim::write_file_atomically(options.write_config,
-                               [&](std::ostream& out) { write_config_toml(p, out); });
-  }
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
   sim::ProgressReporter progress;
@@ -183,6 +180,11 @@ void run_simulate(const SimulateOptions& options) {
                       checkpoints.path);
   const sim::RunResult& result = *run;
 
+  // Written with the results, so that a run refused on the way (a checkpoint of other
+  // parameters) or interrupted leaves no file.
+  if (!options.write_config.empty())
+    sim::write_file_atomically(options.write_config,
+                               [&](std::ostream& out) { write_config_toml(p, out); });
   sim::write_csv_file(result, options.out);
   for (std::size_t k = 0; k < result.snapshots.size(); ++k)
     sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
