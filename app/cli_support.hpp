@@ -2,9 +2,11 @@
 // range, and the usage-error type that main() turns into exit status 2 with one line on stderr.
 #pragma once
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +15,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
@@ -192,6 +196,35 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
     } catch (const std::exception& e) {
       throw UsageError(flag, e.what());
     }
+  }
+}
+
+/// Throws UsageError(flag, ...) if a value of a list option (state points, N values, modes) is
+/// listed twice: its runs would be counted twice, as if independent.
+template <class T>
+void reject_repeated_values(const std::string& flag, std::vector<T> values,
+                            const std::string& remedy) {
+  std::sort(values.begin(), values.end());
+  const auto repeated = std::adjacent_find(values.begin(), values.end());
+  if (repeated != values.end())
+    throw UsageError(flag, fmt::format("value {} is listed twice; {}", *repeated, remedy));
+}
+
+/// Throws UsageError(flag, ...) if two of the (flag, path) outputs name one file (empty paths are
+/// skipped): the output written last would replace the other without a word.
+inline void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
+  for (const auto& [flag, path] : files) {
+    if (path.empty()) continue;
+    std::error_code ec;
+    fs::path file = fs::weakly_canonical(fs::absolute(path), ec);  // through "..", "." and links
+    if (ec) file = fs::absolute(path).lexically_normal();
+    for (const auto& [other, owner] : seen)
+      if (other == file)
+        throw UsageError(flag, "'" + path + "' is also the file of " + owner +
+                                   "; give each output its own file");
+    seen.emplace_back(file, flag);
   }
 }
 

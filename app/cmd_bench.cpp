@@ -266,8 +266,9 @@ void bench_simulation(const BenchOptions& o) {
 
 void run_bench(const BenchOptions& o) {
   if (!o.theory && !o.simulation) throw UsageError("bench", "choose --theory and/or --simulation");
-  require_writable_directory("--out", o.out);
-  std::filesystem::create_directories(o.out);
+  reject_repeated_values("--particles", o.particles,
+                         "each N once (the pooled scatter takes every N's runs as independent)");
+  require_usable_directory("--out", o.out);  // created, and a file written in it, before the work
   if (o.theory) bench_theory(o);
   if (o.simulation) bench_simulation(o);
 }

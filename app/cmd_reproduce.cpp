@@ -40,8 +40,12 @@ void run_reproduce(const ReproduceCliOptions& o) {
                      : validation::ReproduceConfig::paper_scale();
   if (o.seeds > 0) cfg.seeds = o.seeds;
   if (o.relax_each_run) sim::share_relaxed_states(false);
+  // Both folders are created, and a file written in each, before any run: permissions alone do
+  // not show /proc or a read-only mount (and root passes them). The cache first, so that a
+  // refused --cache leaves no empty --out behind.
   require_writable_directory("--out", o.out);
-  if (!o.cache.empty()) require_writable_directory("--cache", o.cache);
+  if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
+  require_usable_directory("--out", o.out);
   validation::SweepOptions sweep;
   sweep.cache_directory =
       o.cache.empty() ? (std::filesystem::path(o.out) / "cache").string() : o.cache;
@@ -49,7 +53,6 @@ void run_reproduce(const ReproduceCliOptions& o) {
   sweep.version = k_version;
   sweep.runner = default_sweep_runner();
   sweep.label = o.quick ? "reproduce --quick" : "reproduce";
-  std::filesystem::create_directories(o.out);
   sim::remove_stale_temporaries(o.out);  // figures and tables of a killed earlier run
   std::cerr << fmt::format(
       "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "

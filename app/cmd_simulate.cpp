@@ -14,6 +14,8 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -41,12 +43,20 @@ struct SimulateOptions {
   sim::CheckpointOptions checkpoints;
 };
 
-// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end.
+// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end;
+// during the relaxation, which has no checkpoint, they end the process at once as without the
+// handler (the run sets g_under_way when the relaxation is done).
 std::atomic<bool> g_interrupt{false};
+std::atomic<bool> g_under_way{false};
 volatile std::sig_atomic_t g_signal = 0;
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
 extern "C" void request_checkpoint(int signal) {
+  if (!g_under_way.load()) {
+    std::signal(signal, SIG_DFL);  // both async-signal-safe
+    std::raise(signal);
+    return;
+  }
   g_signal = signal;
   g_interrupt.store(true);
 }
@@ -66,6 +76,7 @@ std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
   if (!checkpoints.path.empty()) {
     install_checkpoint_signals();
     checkpoints.interrupt = &g_interrupt;
+    checkpoints.under_way = &g_under_way;
   }
   try {
     return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
@@ -98,6 +109,23 @@ void run_simulate(const SimulateOptions& options) {
   }
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
+  {
+    // Every file the run writes, and the checkpoint it continues (which only --checkpoint may
+    // replace: the usual way to go on from where a run stopped).
+    std::vector<std::pair<std::string, std::string>> files{{"--out", options.out}};
+    for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
+      files.emplace_back("--out (its snapshot " + std::to_string(k) + ")",
+                         snapshot_path(options.out, k));
+    files.insert(files.end(), {{"--trajectory", options.trajectory},
+                               {"--xyz", options.xyz},
+                               {"--pair-correlations", options.pair_correlations},
+                               {"--write-config", options.write_config},
+                               {"--checkpoint", checkpoints.path}});
+    require_distinct_files(files);
+    files.pop_back();
+    files.emplace_back("--restart", checkpoints.restart);
+    require_distinct_files(files);
+  }
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
     throw UsageError("--checkpoint-interval", "needs --checkpoint FILE");
   if (!checkpoints.restart.empty() && !std::filesystem::is_regular_file(checkpoints.restart))
@@ -116,6 +144,12 @@ void run_simulate(const SimulateOptions& options) {
         throw UsageError(flag,
                          "not allowed with --method dsmc (it has no positions); allowed "
                          "with --method edmd");
+  // Configurations are written at --snapshot-times only: without them there is nothing to write
+  // (and HDF5 refuses the empty list), found only after the whole run.
+  for (const auto& [flag, path] :
+       {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
+    if (!path->empty() && p.snapshot_times.empty())
+      throw UsageError(flag, "needs --snapshot-times (the times of the configurations to write)");
   if (p.method == sim::Method::dsmc)
     for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
                                      std::pair{"--restart", &checkpoints.restart}})
@@ -123,11 +157,8 @@ void run_simulate(const SimulateOptions& options) {
         throw UsageError(flag, "not allowed with --method dsmc (its runs take seconds); allowed "
                                "with --method edmd");
 
-  if (!options.write_config.empty()) {
+  if (!options.write_config.empty())
     require_writable_file("--write-config", options.write_config, false);
-    sim::write_file_atomically(options.write_config,
-                               [&](std::ostream& out) { write_config_toml(p, out); });
-  }
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
   sim::ProgressReporter progress;
@@ -149,6 +180,11 @@ void run_simulate(const SimulateOptions& options) {
                       checkpoints.path);
   const sim::RunResult& result = *run;
 
+  // Written with the results, so that a run refused on the way (a checkpoint of other
+  // parameters) or interrupted leaves no file.
+  if (!options.write_config.empty())
+    sim::write_file_atomically(options.write_config,
+                               [&](std::ostream& out) { write_config_toml(p, out); });
   sim::write_csv_file(result, options.out);
   for (std::size_t k = 0; k < result.snapshots.size(); ++k)
     sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {

@@ -40,18 +40,11 @@ void run_sweep_command(SweepCliOptions& o) {
   const sim::ParameterInfo& method_row = *sim::find_parameter("method");
   for (const auto& m : o.methods)  // checked by the option
     o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
-  auto reject_repeats = [](const std::string& flag, auto values) {
-    std::sort(values.begin(), values.end());
-    const auto repeated = std::adjacent_find(values.begin(), values.end());
-    if (repeated != values.end())
-      throw UsageError(flag, fmt::format("value {} is listed twice; each point once (use --seeds "
-                                         "for more runs per point)",
-                                         *repeated));
-  };
-  reject_repeats("--density", o.spec.densities);
-  reject_repeats("--restitution", o.spec.restitutions);
-  reject_repeats("--randomize", o.modes);
-  reject_repeats("--method", o.methods);
+  const std::string remedy = "each point once (use --seeds for more runs per point)";
+  reject_repeated_values("--density", o.spec.densities, remedy);
+  reject_repeated_values("--restitution", o.spec.restitutions, remedy);
+  reject_repeated_values("--randomize", o.modes, remedy);
+  reject_repeated_values("--method", o.methods, remedy);
   for (double n : o.spec.densities)
     if (n >= sim::close_packing_density(o.spec.dimension))
       throw UsageError("--density",
@@ -80,10 +73,15 @@ void run_sweep_command(SweepCliOptions& o) {
     const auto& s = p.summary;
     failed += s.failed;
     if (s.restitution >= 1.0) {
+      // As for A below: one run has no standard error.
       std::cout << fmt::format(
-          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {:.5f}  ({} runs)\n", s.density,
+          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {}  ({} runs){}\n", s.density,
           s.restitution, validation::method_name(p.method), s.mode, p.collision_ratio.value,
-          p.collision_ratio.error, s.runs);
+          s.runs >= 2 ? fmt::format("{:.5f}", p.collision_ratio.error) : "-", s.runs,
+          s.runs >= 2   ? ""
+          : s.runs == 0 ? "  (not measured: no run succeeded)"
+                        : "  (no error bar: fewer than 2 runs)");
+      for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
       continue;
     }
     // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.

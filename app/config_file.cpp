@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <set>
 
@@ -109,6 +110,7 @@ ConfigItems read_csv_header(std::istream& in) {
   ConfigItems items;
   std::string line;
   while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (line.back() == '\r') line.pop_back();  // a file saved with Windows line ends
     const auto eq = line.find(" = ");
     if (eq == std::string::npos || line.size() < 2) continue;
     const std::string key = trim(line.substr(1, eq - 1));
@@ -129,11 +131,10 @@ ConfigItems read_csv_header(std::istream& in) {
   return items;
 }
 
-// The option of `key` in cmd: a parameter table name's flag, else --key, else --key with '_'
-// as '-'. nullptr when none.
+// The option of `key` in cmd: the flag of a field name (a parameter table name, a sweep's
+// t_end_in_tau0), else --key, else --key with '_' as '-'. nullptr when none.
 CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
-  if (const sim::ParameterInfo* info = sim::find_parameter(key))
-    if (CLI::Option* op = cmd->get_option_no_throw(std::string(info->flag))) return op;
+  if (CLI::Option* op = cmd->get_option_no_throw(flag_of_field(key))) return op;
   if (CLI::Option* op = cmd->get_option_no_throw("--" + key)) return op;
   std::string dashed = key;
   std::replace(dashed.begin(), dashed.end(), '_', '-');
@@ -172,6 +173,9 @@ void add_config_option(CLI::App* cmd, std::string& path) {
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
   const bool csv = ends_with(path, ".csv");
+  // The key that set each option: a second key for the same option (repeated, or spelled both
+  // as the parameter name and as the flag) would otherwise be dropped without a word.
+  std::map<const CLI::Option*, std::string> set_by;
   for (const auto& [key, values] : read_config_file(path)) {
     CLI::Option* op = option_of(cmd, key);
     if (op == nullptr || !op->get_configurable()) {
@@ -180,6 +184,11 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       throw UsageError("--config", path + ": unknown key '" + key + "' for " + cmd->get_name() +
                                        "; allowed: " + allowed_keys(cmd));
     }
+    if (const auto first = set_by.find(op); first != set_by.end())
+      throw UsageError("--config", path + ": key '" + key + "' sets " + op->get_name() +
+                                       " again (first as '" + first->second +
+                                       "'); give each option once");
+    set_by.emplace(op, key);
     if (op->count() > 0 || values.empty()) continue;  // given on the command line, or empty
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false

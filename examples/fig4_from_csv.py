@@ -19,7 +19,9 @@ def main(table_path, png_path):
     fig, ax = plt.subplots(figsize=(5, 4))
     for (density, mode), rows in table.groupby(["density", "randomize"]):
         rows = rows.sort_values("restitution")
-        ax.errorbar(rows["restitution"], rows["A"], yerr=rows["A_err"], fmt="o", capsize=2,
+        # A_err is nan for a point of one run (no standard error): no bar there.
+        error = rows["A_err"] if rows["A_err"].notna().any() else None
+        ax.errorbar(rows["restitution"], rows["A"], yerr=error, fmt="o", capsize=2,
                     label=f"{'DSMC' if mode == 'dsmc' else 'MD'}, n = {density}, {mode}")
     theory = table.drop_duplicates(["density", "restitution"]).sort_values("restitution")
     for density, rows in theory.groupby("density"):

@@ -4,13 +4,16 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstdint>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
@@ -37,8 +40,8 @@ py::dict theory_prediction(int dim, double restitution, double density, double b
   if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
   if (!(restitution > 0.0 && restitution <= 1.0))
     throw py::value_error("restitution: value is outside the allowed range (0, 1]");
-  if (!(b >= -1.0 && b <= 1.0))
-    throw py::value_error("b: value is outside the allowed range [-1, 1]");
+  // b's range depends on d and ε (where f2 and μ2 stay positive): predict_cooling checks it
+  // and names it, as the CLI does.
   if (!(tolerance >= 1e-13 && tolerance <= 1e-2))
     throw py::value_error("tolerance: value is outside the allowed range [1e-13, 1e-2]");
   try {
@@ -97,6 +100,7 @@ constexpr bool is_plain_v =
 // header reads them. Validation stays sim::validate. The checkpoint keywords go to `checkpoints`.
 sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions& checkpoints) {
   sim::Parameters p;
+  std::map<const sim::ParameterInfo*, std::string> given;  // row -> the keyword that set it
   for (auto item : kwargs) {
     const auto name = item.first.cast<std::string>();
     const py::handle v = item.second;
@@ -106,7 +110,9 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     }
     if (name == "checkpoint_interval") {
       checkpoints.interval = keyword_as<double>(name, v);
-      if (!(checkpoints.interval >= 0)) throw py::value_error("checkpoint_interval: must be >= 0");
+      if (!(checkpoints.interval >= 0 && std::isfinite(checkpoints.interval)))
+        throw py::value_error("checkpoint_interval: value " + py::repr(v).cast<std::string>() +
+                              " is outside the allowed range [0, inf)");
       continue;
     }
     if (name == "restart") {
@@ -116,6 +122,9 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
     if (info == nullptr)
       throw py::type_error("simulate() got an unexpected keyword argument '" + name + "'");
+    if (const auto [first, inserted] = given.emplace(info, name); !inserted)  // dim and dimension
+      throw py::type_error("simulate() got '" + name + "' and '" + first->second +
+                           "' for the same parameter; give one");
     std::visit(
         [&](auto member) {
           using T = std::remove_cvref_t<decltype(p.*member)>;
@@ -133,6 +142,13 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
   }
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
+  if (!checkpoints.path.empty()) {
+    try {
+      sim::probe_writable(checkpoints.path);  // now, not at the first checkpoint after the work
+    } catch (const std::exception& e) {
+      throw py::value_error(std::string("checkpoint: ") + e.what());
+    }
+  }
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {

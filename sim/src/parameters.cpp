@@ -64,6 +64,13 @@ void validate(const Parameters& p) {
   for (double t : p.snapshot_times)
     if (!(t <= p.t_end))
       out_of_range("snapshot_times", number(t), "[0, t_end] = [0, " + number(p.t_end) + "]");
+  // Snapshot k (the file <out>.snapshot<k>.csv, the k-th frame of a trajectory) is taken at the
+  // k-th time listed: the list must increase, or the files would not match the list's order.
+  for (std::size_t k = 1; k < p.snapshot_times.size(); ++k)
+    if (!(p.snapshot_times[k] > p.snapshot_times[k - 1]))
+      throw std::invalid_argument("snapshot_times: value " + number(p.snapshot_times[k]) +
+                                  " follows " + number(p.snapshot_times[k - 1]) +
+                                  "; the times must increase (each snapshot once)");
   const double side = box_side(p);
   if (!std::isfinite(side))
     out_of_range("density", number(p.density),

@@ -100,6 +100,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
                             ": t_end = " + message_number(p.t_end) +
                             " lies before the checkpoint's time " + message_number(engine.time()));
   }
+  if (checkpoints.under_way != nullptr) checkpoints.under_way->store(true);
 
   const std::vector<double> samples = sample_times(p);
   std::vector<double> snapshots = p.snapshot_times;

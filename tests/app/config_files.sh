@@ -16,7 +16,10 @@ cmp run.csv again.csv || fail "the run repeated from its CSV header differs"
 cmp run.snapshot1.csv again.snapshot1.csv || fail "its snapshot differs"
 "$bin" simulate --config run.toml --out toml.csv --quiet 2>/dev/null || fail "run from run.toml"
 cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differs"
-echo "ok: a run repeated from its CSV and from its TOML, byte for byte"
+sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends
+"$bin" simulate --config crlf.csv --out crlf_again.csv --quiet 2>/dev/null || fail "run from crlf.csv"
+cmp run.csv crlf_again.csv || fail "the run repeated from its CSV with CRLF line ends differs"
+echo "ok: a run repeated from its CSV (LF or CRLF) and from its TOML, byte for byte"
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
 grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
@@ -33,9 +36,12 @@ TOML
 "$bin" sweep --config sweep.toml --cache cache --out sweep.csv --threads 1 >/dev/null 2>&1 ||
   fail "sweep from a file"
 [ "$(grep -c '^0\.[05]*1*,' sweep.csv)" -eq 4 ] || fail "sweep.csv lacks the 4 state points"
+"$bin" sweep --config sweep.csv --cache cache --out again.csv --threads 1 >/dev/null 2>&1 ||
+  fail "sweep from its summary"
+cmp sweep.csv again.csv || fail "the sweep repeated from its summary's header differs"
 printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
 "$bin" theory --config theory.toml | grep -q '"restitution": 0.8' || fail "theory from a file"
-echo "ok: sweep and theory read their options from files"
+echo "ok: sweep and theory read their options from files; a sweep repeats from its summary"
 
 failures=0
 refused() {  # refused REGEX ARGS...
@@ -52,6 +58,11 @@ refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is ou
   simulate --config range.toml
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
+printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
+refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
+  simulate --config twice.toml
+printf 'dimension = 3\ndim = 2\n' >aliases.toml
+refused "aliases.toml: key 'dim' sets --dim again \(first as 'dimension'\)" simulate --config aliases.toml
 printf '[simulate]\ndensity = 0.1\n' >table.toml
 refused "table.toml line 1: tables are not used" simulate --config table.toml
 printf 'seeds = 0\n' >seeds.toml

@@ -59,6 +59,10 @@ expect2 --out simulate --particles 100 --t-end 1 --out /proc/run.csv
 expect2 --out simulate --particles 100 --t-end 1 --out /sys/run.csv
 expect2 --out simulate --particles 100 --t-end 1 --out "$(printf 'x%.0s' $(seq 300)).csv"
 expect2 --cache sweep --particles 200 --seeds 1 --quiet --cache /proc/cache
+expect2 --out reproduce --quick --seeds 1 --no-figures --out /proc/reproduced
+expect2 --cache reproduce --quick --seeds 1 --no-figures --out reproduced --cache /proc/cache
+[ ! -e reproduced ] || fail "a refused reproduce --cache left its --out folder behind"
+expect2 --out bench --theory --out /sys/bench
 echo "ok: unwritable outputs refused before the work"
 
 # 4. Special files are not replaced.

@@ -35,6 +35,20 @@ def test_theory_rejects_bad_density():
         molchaos.theory(dim=2, restitution=0.9, density=2.0)
 
 
+@pytest.mark.parametrize("b", [-1.5, 0.6])
+def test_theory_takes_the_b_the_cli_takes(molchaos_bin, b):
+    # The allowed b depends on d and eps ([-2, 0.671216) here); the module and the CLI share it.
+    out = subprocess.run(
+        [molchaos_bin, "theory", "--restitution", "0.9", "--density", "0.05", "--b", str(b),
+         "--json"], check=True, capture_output=True, text=True).stdout
+    assert molchaos.theory(restitution=0.9, density=0.05, b=b)["A"]["value"] == json.loads(out)["A"]
+
+
+def test_theory_refuses_b_where_mu2_vanishes():
+    with pytest.raises(ValueError, match=r"0\.9 is outside the allowed range \[-2, 0\.671216\)"):
+        molchaos.theory(restitution=0.9, density=0.05, b=0.9)
+
+
 SMALL = dict(dim=2, particles=200, density=0.05, restitution=0.9, seed=3, t_end=20.0,
              relax_collisions_per_particle=5.0, samples_per_decade=5)
 
@@ -78,7 +92,9 @@ def test_simulate_is_reproducible_and_cools():
 
 
 @pytest.mark.parametrize("name,value", [("restitution", 1.5), ("density", 5.0),
-                                        ("particles", 1), ("t_end", -1.0)])
+                                        ("particles", 1), ("t_end", -1.0),
+                                        ("relax_collisions_per_particle", 1e30),
+                                        ("snapshot_times", [3.0, 1.0])])
 def test_simulate_bad_parameter_names_it(name, value):
     kwargs = dict(SMALL)
     kwargs[name] = value
@@ -110,6 +126,19 @@ def test_simulate_method_refuses_unknown_and_shuffles():
 def test_simulate_unknown_keyword():
     with pytest.raises(TypeError, match="restitutoin"):
         molchaos.simulate(restitutoin=0.9)
+
+
+def test_simulate_refuses_an_unwritable_checkpoint_before_the_run():
+    # Refused before the run, as by the CLI, not at the first checkpoint after part of the work.
+    with pytest.raises(ValueError, match="checkpoint: cannot create a file next to /proc/run.ckpt"):
+        molchaos.simulate(**SMALL, checkpoint="/proc/run.ckpt", checkpoint_interval=1.0)
+    with pytest.raises(ValueError, match=r"checkpoint_interval: value inf is outside .*\[0, inf\)"):
+        molchaos.simulate(**SMALL, checkpoint="run.ckpt", checkpoint_interval=float("inf"))
+
+
+def test_simulate_refuses_dim_and_dimension_together():
+    with pytest.raises(TypeError, match="'dimension' and 'dim' for the same parameter"):
+        molchaos.simulate(**SMALL, dimension=3)  # SMALL has dim=2
 
 
 def test_simulate_snapshots_match_snapshot_csv(molchaos_bin, tmp_path):

@@ -69,6 +69,18 @@ BOOST_AUTO_TEST_CASE(fig4_csv_holds_every_point_dsmc_included) {
   BOOST_TEST(csv.find("# dsmc_seeds = 16") != std::string::npos);
 }
 
+// reproduce --seeds 1: a point of one run has its values but no standard errors (nan, not 0).
+BOOST_AUTO_TEST_CASE(fig4_csv_gives_no_error_bar_for_one_run) {
+  ReproduceResults r = synthetic_results();
+  for (auto& p : r.fig4_points) {
+    p.summary.runs = 1;
+    p.summary.A.error = p.summary.a2.error = p.summary.mean_dyad.error = 0.0;
+  }
+  const auto lines = data_lines(fig4_csv(r));
+  BOOST_TEST_REQUIRE(lines.size() == 1u + 6u);
+  BOOST_TEST(lines[1] == "0.05,0.8,none,10.5,nan,1,0,0,0.01,nan,0,nan,0");
+}
+
 BOOST_AUTO_TEST_CASE(a2_csv_holds_every_gas_and_both_theory_levels) {
   ReproduceResults r = synthetic_results();
   A2Panel panel;

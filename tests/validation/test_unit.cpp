@@ -1,6 +1,8 @@
 // validation/: the Haff fit on exact data, the window rule, straight-line fits, ensemble
 // statistics, seeds, and the cache (round trip, corrupt entries recomputed).
 #define BOOST_TEST_MODULE validation_unit
+#include <unistd.h>
+
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -12,9 +14,9 @@
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/validation/analysis.hpp"
+#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/haff_fit.hpp"
-#include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/sweep.hpp"
 
@@ -271,6 +273,59 @@ BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   BOOST_TEST(std::isnan(s.A.error));
   BOOST_TEST(std::isnan(s.a2.value));
   BOOST_TEST(std::isnan(s.mean_dyad.value));
+}
+
+// An elastic run without a collision (t_end shorter than a mean free time) measures no collision
+// frequency: the point is not measured (nan) and the run counted as failed, not 0 ± 0.
+BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
+  EnsembleSpec spec;
+  spec.particles = 100;
+  spec.restitutions = {1.0};
+  spec.seeds = 2;
+  spec.t_end_elastic = 1e-9;
+  std::vector<RunOutcome> runs(2);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    runs[i].ok = true;
+    runs[i].result.parameters = expand(spec)[i];
+    runs[i].result.collisions = 0;
+    runs[i].result.samples.resize(2);
+    runs[i].result.samples[1].t = 1e-9;
+  }
+  const auto points = summarize(spec, runs, WindowRule{});
+  BOOST_TEST_REQUIRE(points.size() == 1u);
+  BOOST_TEST(points[0].summary.runs == 0);
+  BOOST_TEST(points[0].summary.failed == 2);
+  BOOST_TEST(std::isnan(points[0].collision_ratio.value));
+  BOOST_TEST(points[0].summary.messages.at(0).find("no collision by t_end = 1e-09") !=
+             std::string::npos);
+}
+
+// The summary CSV of a point with one run: the values, but no standard errors (nan, not 0).
+BOOST_AUTO_TEST_CASE(summary_of_one_run_has_no_error_bars) {
+  EnsembleSpec spec;
+  spec.restitutions = {0.9, 1.0};
+  spec.seeds = 1;
+  std::vector<PointResult> points(2);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i].summary.density = 0.05;
+    points[i].summary.restitution = spec.restitutions[i];
+    points[i].summary.mode = "none";
+    points[i].summary.runs = 1;
+  }
+  points[0].summary.A = {20.5, 0.0};
+  points[0].A_theory = {21.3, 2.5e-14};
+  points[1].collision_ratio = {1.01, 0.0};
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("molchaos_summary_" + std::to_string(::getpid()) + ".csv");
+  write_summary_csv(spec, points, "test", path.string());
+  std::ifstream in(path);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("0.05,")) rows.push_back(line);
+  std::filesystem::remove(path);
+  BOOST_TEST_REQUIRE(rows.size() == 2u);
+  BOOST_TEST(rows[0].starts_with("0.05,0.9,edmd,none,20.5,nan,1,0,21.3,2.5e-14,0,nan,0,nan,"));
+  BOOST_TEST(rows[1].ends_with(",1.01,nan"));
 }
 
 // The report page embeds an animation as a GIF data URI and a still figure as a PNG one.

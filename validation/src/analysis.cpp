@@ -58,6 +58,10 @@ Measurement mean_and_standard_error(const std::vector<double>& values) {
   return m;
 }
 
+double error_of_runs(double error, int runs) {
+  return runs >= 2 ? error : std::numeric_limits<double>::quiet_NaN();
+}
+
 double collision_frequency_ratio(const sim::RunResult& run) {
   const auto& p = run.parameters;
   const double t = run.samples.empty() ? 0.0 : run.samples.back().t;

@@ -121,6 +121,17 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
             errors.push_back(runs[k].error);
             continue;
           }
+          // An elastic run without a collision measures no frequency (0 ± 0 from every seed
+          // would read as a measurement): it counts as failed, as a cooling run that ends before
+          // its transient does.
+          if (eps >= 1.0 && runs[k].result.collisions == 0) {
+            ++failed_runs;
+            errors.push_back(fmt::format(
+                "seed {}: no collision by t_end = {}, so no collision frequency (lengthen the run, "
+                "--t-end-elastic)",
+                runs[k].result.parameters.seed, runs[k].result.parameters.t_end));
+            continue;
+          }
           group.push_back(&runs[k].result);
           if (eps >= 1.0) ratios.push_back(collision_frequency_ratio(runs[k].result));
         }
@@ -163,27 +174,36 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
                        s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
-    // Like a run's header: the method line only when it is not the default (edmd alone); a
-    // list space separated, as --config reads it.
+    // The state points and modes as listed, so that `sweep --config summary.csv` repeats the
+    // sweep; lists space separated, as --config reads them.
+    std::vector<std::string> modes;
+    for (auto m : s.modes) modes.emplace_back(sim::to_string(m));
+    out << fmt::format("# density = {}\n# restitution = {}\n# randomize = {}\n",
+                       fmt::join(s.densities, " "), fmt::join(s.restitutions, " "),
+                       fmt::join(modes, " "));
+    // Like a run's header: the method line only when it is not the default (edmd alone).
     if (s.methods != std::vector<sim::Method>{sim::Method::edmd}) {
       std::vector<std::string> names;
       for (auto m : s.methods) names.push_back(method_name(m));
       out << "# method = " << fmt::format("{}", fmt::join(names, " ")) << "\n";
     }
     out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
-           "succeeded (runs = 0, failed = their number)\n";
+           "succeeded (runs = 0, failed = their number); their errors are nan where fewer than 2 "
+           "runs succeeded (no standard error)\n";
     out << "density,restitution,method,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";
     for (const auto& p : points) {
       const auto& m = p.summary;
+      const auto error = [&m](double e) { return error_of_runs(e, m.runs); };
       out << fmt::format(
           "{},{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},"
           "{:.3g},{:.8g},{:.3g}\n",
-          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, m.A.error, m.runs,
-          m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value, m.mean_dyad.error,
-          m.a2.value, m.a2.error, m.breakdowns, m.breakdown_time.value, m.breakdown_time.error,
-          p.collision_ratio.value, p.collision_ratio.error);
+          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, error(m.A.error),
+          m.runs, m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value,
+          error(m.mean_dyad.error), m.a2.value, error(m.a2.error), m.breakdowns,
+          m.breakdown_time.value, m.breakdown_time.error, p.collision_ratio.value,
+          error(p.collision_ratio.error));
     }
   });
 }

@@ -71,9 +71,10 @@ std::string fig4_csv(const ReproduceResults& r) {
     const PointResult& p = *point;
     const auto& m = p.summary;
     s += fmt::format("{},{},{},{:.10g},{:.4g},{},{:.10g},{:.3g},{:.6g},{:.3g},{:.8g},{:.3g},{}\n",
-                     m.density, m.restitution, mode, m.A.value, m.A.error, m.runs, p.A_theory.value,
-                     p.A_theory.error, m.a2.value, m.a2.error, m.mean_dyad.value, m.mean_dyad.error,
-                     m.breakdowns);
+                     m.density, m.restitution, mode, m.A.value, error_of_runs(m.A.error, m.runs),
+                     m.runs, p.A_theory.value, p.A_theory.error, m.a2.value,
+                     error_of_runs(m.a2.error, m.runs), m.mean_dyad.value,
+                     error_of_runs(m.mean_dyad.error, m.runs), m.breakdowns);
   }
   return s;
 }

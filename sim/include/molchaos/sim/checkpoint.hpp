@@ -37,6 +37,10 @@ struct CheckpointOptions {
   std::string restart;       ///< checkpoint to continue from (empty: a new run)
   /// Set (by a signal handler) to ask for a checkpoint and a return without a result.
   const std::atomic<bool>* interrupt = nullptr;
+  /// Set by the run once its relaxation (or the restore of a checkpoint) is done, from when an
+  /// interrupt is obeyed. The relaxation neither pauses nor can be saved: a signal handler ends
+  /// the process at once before then.
+  std::atomic<bool>* under_way = nullptr;
 };
 
 namespace detail {

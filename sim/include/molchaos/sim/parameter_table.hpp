@@ -102,7 +102,7 @@ inline const std::array<ParameterInfo, 16>& parameter_table() {
       {"relax_collisions_per_particle",
        "--relax",
        &P::relax_collisions_per_particle,
-       {0, true, k_inf, false},
+       {0, true, 1e9, true},  // N/2 times this many collisions is counted in 64 bits
        "collisions per particle",
        "Elastic collisions per particle before t = 0"},
       {"tc",

@@ -29,6 +29,10 @@ RunAnalysis analyse_run(const sim::RunResult& run, const WindowRule& rule);
 /// Mean and standard error of the mean (error 0 for fewer than two values).
 Measurement mean_and_standard_error(const std::vector<double>& values);
 
+/// A standard error as a table prints it: nan where fewer than two runs gave it (one run has no
+/// scatter, so its error is unknown, not the 0 that mean_and_standard_error holds).
+double error_of_runs(double error, int runs);
+
 /// Collision frequency per particle of an elastic run, 2·collisions/(N t), over Enskog's.
 double collision_frequency_ratio(const sim::RunResult& run);
 
