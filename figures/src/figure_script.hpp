@@ -2,6 +2,7 @@
 // gnuplot-iostream), run once per terminal, its outputs renamed into place only when complete.
 #pragma once
 
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,16 @@ std::string colour(std::size_t index);
 void require_same_size(const std::string& field, std::size_t size, const std::string& other_field,
                        std::size_t other_size);
 void require_non_empty(const std::string& field, std::size_t size);
+
+/// The panels of a figure drawn per state point: the (dimension, density) pairs of `rows` (any
+/// rows with those members), in order; an error when there are none.
+template <class Rows>
+std::set<std::pair<int, double>> state_panels(const Rows& rows) {
+  std::set<std::pair<int, double>> panels;
+  for (const auto& r : rows) panels.emplace(r.dimension, r.density);
+  require_non_empty("rows", panels.size());
+  return panels;
+}
 
 /// Title, log-log axes with 10^k tick labels, axis labels, boxed key and light grid of a
 /// work-precision diagram.

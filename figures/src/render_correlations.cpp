@@ -80,9 +80,7 @@ RenderedFigure render_pair_correlations(const std::vector<validation::PairCorrel
 
 RenderedFigure render_contact_moments(const std::vector<validation::ContactMomentRow>& rows,
                                       const RenderOptions& options) {
-  std::set<std::pair<int, double>> panels;
-  for (const auto& r : rows) panels.emplace(r.dimension, r.density);
-  detail::require_non_empty("rows", panels.size());
+  const auto panels = detail::state_panels(rows);
   detail::FigureScript script;
   script.basename = "fig_contact_moments";
   script.description =
@@ -125,9 +123,7 @@ RenderedFigure render_contact_moments(const std::vector<validation::ContactMomen
 
 RenderedFigure render_cooling_decomposition(
     const std::vector<validation::CoolingDecompositionRow>& rows, const RenderOptions& options) {
-  std::set<std::pair<int, double>> panels;
-  for (const auto& r : rows) panels.emplace(r.dimension, r.density);
-  detail::require_non_empty("rows", panels.size());
+  const auto panels = detail::state_panels(rows);
   detail::FigureScript script;
   script.basename = "fig_cooling_decomposition";
   script.description =

@@ -13,13 +13,9 @@ namespace molchaos::figures {
 
 RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParameterRow>& rows,
                                        const RenderOptions& options) {
-  std::set<std::pair<int, double>> panels;
+  const auto panels = detail::state_panels(rows);
   std::set<double> restitutions;
-  for (const auto& r : rows) {
-    panels.emplace(r.dimension, r.density);
-    restitutions.insert(r.restitution);
-  }
-  detail::require_non_empty("rows", panels.size());
+  for (const auto& r : rows) restitutions.insert(r.restitution);
   detail::FigureScript script;
   script.basename = "fig_impact_parameter";
   script.description =
