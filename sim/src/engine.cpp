@@ -308,7 +308,10 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   std::int32_t partner = -1;
   int x[D] = {};  // i's cell coordinates (cells only)
   if (neighbour_lists_) {
-    earliest<Prefetch>(i, lists_.slots(i), lists_.count(i), best, partner);
+    if (list_needs_wrap(i))
+      earliest<Prefetch, true>(i, lists_.slots(i), lists_.count(i), best, partner);
+    else
+      earliest<Prefetch, false>(i, lists_.slots(i), lists_.count(i), best, partner);
   } else {
     coords_(part_[i].cell, x);
     int stencil[stencil_size<D>()];
@@ -354,8 +357,6 @@ void Engine<D, Observer>::shell_exit(std::int32_t i) {
 // centre to i's list, and i to theirs (only j > i when `only_higher`, for the initial build).
 template <int D, class Observer>
 void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
-  const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
-  const double cutoff2 = cutoff * cutoff;
   int x[D];
   coords_(part_[i].cell, x);
   int stencil[stencil_size<D>()];
@@ -363,22 +364,10 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   const std::int32_t count = gather<stencil_size<D>()>(stencil);
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
-  // Branch-free filter (about one candidate in six is a neighbour): the neighbours are compacted
-  // to the front of the candidates, in candidate order.
-  const double* ci = &center_[D * i];
-  std::int32_t found = 0;
-  for (std::int32_t k = 0; k < count; ++k) {
-    const std::int32_t j = cand[k];
-    double d2 = 0;
-    for (int a = 0; a < D; ++a) {
-      double d = ci[a] - center_[D * j + a];
-      d -= d > half_box_ ? box_ : 0.0;
-      d += d < -half_box_ ? box_ : 0.0;
-      d2 += d * d;
-    }
-    cand[found] = j;
-    found += static_cast<int>((d2 < cutoff2) & (j != i) & (!only_higher | (j > i)));
-  }
+  const std::int32_t lower = only_higher ? i : -1;
+  const std::int32_t found = cells_per_side_ >= 4 && interior_cell(x)
+                                 ? keep_neighbours<false>(i, cand, count, lower)
+                                 : keep_neighbours<true>(i, cand, count, lower);
   for (std::int32_t k = 0; k < found; ++k) lists_.prefetch(cand[k]);
   for (std::int32_t k = 0; k < found; ++k) {
     lists_.add(i, cand[k]);

@@ -157,6 +157,79 @@ template <bool Prefetch, bool Wrap>
   partner = p;
 }
 
+// The candidates whose shell centre lies within the list cutoff of i's, compacted to the front of
+// cand in candidate order; i itself and every j <= lower are left out (lower = i for the initial
+// build, which files each pair once, else -1). Returns how many. Branch-free (about one
+// candidate in six is kept); with SSE2 two candidates per pass, the components regrouped as in
+// pair_times() and the sum in the scalar order, so the kept set is the same. cand[count] must be
+// writable: an odd list is padded there with i. Wrap = false for the stencil of a cell off the
+// box boundary with 4 cells or more a side, whose centres lie less than half the box from i's.
+template <int D, class Observer>
+template <bool Wrap>
+[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::keep_neighbours(
+    std::int32_t i, std::int32_t* cand, std::int32_t count, std::int32_t lower) const {
+  const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
+  const double cutoff2 = cutoff * cutoff;
+  const double* ci = &center_[D * i];
+  std::int32_t found = 0;
+  auto keep = [&](std::int32_t j, int within) {
+    cand[found] = j;
+    found += within & static_cast<int>(j != i) & static_cast<int>(j > lower);
+  };
+#if defined(__SSE2__)
+  const __m128d half = _mm_set1_pd(half_box_), minus_half = _mm_set1_pd(-half_box_);
+  const __m128d box = _mm_set1_pd(box_), limit = _mm_set1_pd(cutoff2);
+  cand[count] = i;
+  for (std::int32_t k = 0; k < count; k += 2) {
+    const std::int32_t j1 = cand[k], j2 = cand[k + 1];
+    __m128d d2 = _mm_setzero_pd();
+    for (int a = 0; a < D; ++a) {
+      const __m128d cj = _mm_loadh_pd(_mm_load_sd(&center_[D * j1 + a]), &center_[D * j2 + a]);
+      __m128d d = _mm_sub_pd(_mm_set1_pd(ci[a]), cj);
+      if constexpr (Wrap) {
+        d = _mm_sub_pd(d, _mm_and_pd(_mm_cmpgt_pd(d, half), box));
+        d = _mm_add_pd(d, _mm_and_pd(_mm_cmplt_pd(d, minus_half), box));
+      }
+      d2 = a == 0 ? _mm_mul_pd(d, d) : _mm_add_pd(d2, _mm_mul_pd(d, d));
+    }
+    const int within = _mm_movemask_pd(_mm_cmplt_pd(d2, limit));
+    keep(j1, within & 1);
+    keep(j2, within >> 1);
+  }
+#else
+  for (std::int32_t k = 0; k < count; ++k) {
+    const std::int32_t j = cand[k];
+    double d2 = 0;
+    for (int a = 0; a < D; ++a) {
+      double d = ci[a] - center_[D * j + a];
+      if constexpr (Wrap) {
+        d -= d > half_box_ ? box_ : 0.0;
+        d += d < -half_box_ ? box_ : 0.0;
+      }
+      d2 += d * d;
+    }
+    keep(j, static_cast<int>(d2 < cutoff2));
+  }
+#endif
+  return found;
+}
+
+// Whether i's neighbour list needs the periodic wrap in its pair predictions. Not when i's shell
+// centre lies at least cutoff + shell inside every face of the box: a listed partner's centre,
+// within the cutoff of i's, is then stored as the image nearest i (centres lie in [0, box)), and
+// both particles lie within a shell of their centres, so every separation is the plain difference
+// and shorter than half the box (cutoff + 2 shell < box / 2).
+template <int D, class Observer>
+[[gnu::always_inline]] inline bool Engine<D, Observer>::list_needs_wrap(std::int32_t i) const {
+  const double margin = 1.0 + 3.0 * shell_ + 1e-9;
+  bool inside = true;
+  for (int a = 0; a < D; ++a) {
+    const double c = center_[D * i + a];
+    inside = inside & (c >= margin) & (c <= box_ - margin);
+  }
+  return !inside;
+}
+
 // True when the cell with coordinates x is not on the box boundary: its stencil needs no
 // periodic wrap and is given by fixed index offsets.
 template <int D, class Observer>

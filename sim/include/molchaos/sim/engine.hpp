@@ -154,12 +154,16 @@ class Engine {
   template <bool Wrap>
   [[gnu::always_inline]] __m128d pair_times(std::int32_t i, std::int32_t j1, std::int32_t j2) const;
 #endif
+  template <bool Wrap>
+  [[gnu::always_inline]] std::int32_t keep_neighbours(std::int32_t i, std::int32_t* cand,
+                                                      std::int32_t count, std::int32_t lower) const;
   template <int Count>
   [[gnu::always_inline]] std::int32_t gather(const int* cells);
   template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
                                        double& best, std::int32_t& partner) const;
   [[gnu::always_inline]] bool interior_cell(const int* x) const;
+  [[gnu::always_inline]] bool list_needs_wrap(std::int32_t i) const;
   [[gnu::always_inline]] void stencil_of(std::int32_t i, const int* x, int* stencil) const;
   [[gnu::always_inline]] void crossing(std::int32_t i, const int* x);
   void shell_exit(std::int32_t i);
