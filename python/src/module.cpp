@@ -38,19 +38,13 @@ py::dict estimate(const theory::Estimate& e) {
 py::dict theory_prediction(int dim, double restitution, double density, double b,
                            double tolerance) {
   if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
-  if (!(restitution > 0.0 && restitution <= 1.0))
-    throw py::value_error("restitution: value is outside the allowed range (0, 1]");
-  // b's range depends on d and ε (where f2 and μ2 stay positive): predict_cooling checks it
-  // and names it, as the CLI does.
-  if (!(tolerance >= 1e-13 && tolerance <= 1e-2))
-    throw py::value_error("tolerance: value is outside the allowed range [1e-13, 1e-2]");
-  try {
-    theory::require_density(dim, density);
-  } catch (const std::invalid_argument&) {
-    throw py::value_error("density: value " + std::to_string(density) +
-                          " is outside the allowed range (0, close packing " +
-                          std::to_string(theory::close_packing_density(dim)) + ")");
-  }
+  if (!(tolerance >= theory::k_min_relative_tolerance &&
+        tolerance <= theory::k_max_relative_tolerance))
+    throw py::value_error("tolerance: value " +
+                          py::repr(py::float_(tolerance)).cast<std::string>() +
+                          " is outside the allowed range [1e-13, 1e-2]");
+  // Restitution, density (close packing, and where τ0 overflows) and b (where f2 and μ2 stay
+  // positive): predict_cooling checks them and names them, the checks the CLI reports.
   theory::CoolingInputs inputs;
   inputs.dimension = dim;
   inputs.density = density;
@@ -58,9 +52,11 @@ py::dict theory_prediction(int dim, double restitution, double density, double b
   inputs.correlation_b = b;
   inputs.quadrature.relative_tolerance = tolerance;
   theory::CoolingPrediction p;
-  {
+  try {
     py::gil_scoped_release release;
     p = theory::predict_cooling(inputs);
+  } catch (const std::invalid_argument& e) {
+    throw py::value_error(e.what());  // the message starts with the field's name
   }
   py::dict d;
   d["dim"] = dim;

@@ -1,6 +1,8 @@
 """The Python module against the CLI: the same functions, so the same numbers bit for bit."""
 
 import json
+import math
+import re
 import subprocess
 import threading
 import time
@@ -33,6 +35,22 @@ def test_theory_equals_cli_json(molchaos_bin):
 def test_theory_rejects_bad_density():
     with pytest.raises(ValueError, match="density"):
         molchaos.theory(dim=2, restitution=0.9, density=2.0)
+
+
+@pytest.mark.parametrize("restitution", [0.9, 1.0])
+def test_theory_refuses_the_density_the_cli_refuses(molchaos_bin, restitution):
+    # At n = 1e-320 A and tau0 ~ 1/n overflow a double: the module and the CLI both refuse it,
+    # with the same smallest density, and never return A = inf.
+    cli = subprocess.run(
+        [molchaos_bin, "theory", "--restitution", str(restitution), "--density", "1e-320"],
+        capture_output=True, text=True)
+    assert cli.returncode == 2
+    smallest = re.search(r"allowed range \(([0-9.e+-]+), 1\.154701\)", cli.stderr).group(1)
+    with pytest.raises(ValueError, match=rf"density: .*allowed range \({smallest}, 1\.154701\)"):
+        molchaos.theory(restitution=restitution, density=1e-320)
+    # Just above the smallest density, the prediction is finite.
+    A = molchaos.theory(restitution=restitution, density=2 * float(smallest))["A"]["value"]
+    assert math.isfinite(A)
 
 
 @pytest.mark.parametrize("b", [-1.5, 0.6])

@@ -2,8 +2,11 @@
 #include "molchaos/theory/cooling.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <stdexcept>
 
 #include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/correlation_range.hpp"
@@ -72,6 +75,26 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
     out.tau0 = {out.A.value / one_minus_eps2, std::abs(out.A.error / one_minus_eps2)};
   } else {
     out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
+  }
+  // A and τ0 ∝ 1/(n g2): at a tiny density they overflow a double (τ0 at ε = 1 is infinite by
+  // physics, A is not). Refused here, where they are computed, so that no caller prints inf.
+  const bool tau0_overflows = in.restitution < 1.0 && !std::isfinite(out.tau0.value);
+  if (!std::isfinite(out.A.value) || tau0_overflows) {
+    // The smallest density with finite A and τ0, from n = 1e-6, where g2 is 1 to a part in a
+    // million and both are ∝ 1/n.
+    CoolingInputs reference = in;
+    reference.density = 1e-6;
+    const CoolingPrediction r = predict_cooling(reference);
+    const double largest = in.restitution < 1.0 ? r.tau0.value : r.A.value;
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "density: value " << in.density << " is outside the allowed range ("
+        << std::setprecision(3) << reference.density * largest / std::numeric_limits<double>::max()
+        << ", " << std::fixed << std::setprecision(6) << close_packing_density(in.dimension)
+        << ") for restitution " << std::defaultfloat << in.restitution
+        << (in.restitution < 1.0 ? ": below it the cooling time τ0 ∝ 1/n overflows a double"
+                                 : ": below it the prefactor A ∝ 1/n overflows a double");
+    throw std::invalid_argument(msg.str());
   }
   return out;
 }
