@@ -199,6 +199,55 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
   }
 }
 
+/// The items of one comma-separated argument ("0.1,0.2" -> {"0.1", "0.2"}), empty ones kept.
+inline std::vector<std::string> comma_items(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t begin = 0;
+  for (std::size_t comma; (comma = text.find(',', begin)) != std::string::npos; begin = comma + 1)
+    items.push_back(text.substr(begin, comma - begin));
+  items.push_back(text.substr(begin));
+  return items;
+}
+
+/// A list option: comma-separated values (and, as CLI11 lists take them, several arguments or
+/// repeats of the flag), each item checked by `item_check`. The one parser of every list of the
+/// CLI: an empty item ("0.1,,0.2", a lone ",") is refused as such, where a CLI11 delimiter drops
+/// it without a word, or, when nothing is left, takes the next flag as the value.
+template <class T>
+CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector<T>& target,
+                             const std::string& help, CLI::Validator item_check) {
+  CLI::Validator items(
+      [item_check](std::string& text) -> std::string {
+        const auto list = comma_items(text);
+        for (std::size_t k = 0; k < list.size(); ++k) {
+          if (list[k].empty())
+            return fmt::format(
+                "empty item {} of {} in the list '{}'; give the values separated "
+                "by single commas",
+                k + 1, list.size(), text);
+          std::string item = list[k];
+          if (std::string why = item_check(item); !why.empty()) return why;
+        }
+        return {};
+      },
+      item_check.get_description());
+  return cmd
+      ->add_option_function<std::vector<std::string>>(
+          flag,
+          [&target, flag](const std::vector<std::string>& arguments) {
+            target.clear();
+            for (const auto& argument : arguments)
+              for (const auto& item : comma_items(argument)) {
+                T value{};
+                if (!CLI::detail::lexical_cast(item, value))  // checked above
+                  throw UsageError(flag, "cannot read '" + item + "'");
+                target.push_back(value);
+              }
+          },
+          help)
+      ->check(items);
+}
+
 /// Throws UsageError(flag, ...) if a value of a list option (state points, N values, modes) is
 /// listed twice: its runs would be counted twice, as if independent.
 template <class T>

@@ -283,9 +283,8 @@ void add_bench_command(CLI::App& app) {
                 "coefficient table: CPU time vs tolerance and error reached");
   cmd->add_flag("--simulation", o->simulation,
                 "flux gas: error of A vs CPU seconds over N (same work each)");
-  cmd->add_option("--particles", o->particles, "N values (comma separated)")
-      ->delimiter(',')
-      ->check(integer_in(100, 10000000));
+  add_list_option(cmd, "--particles", o->particles, "N values (comma separated)",
+                  integer_in(100, 10000000));
   cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
       ->check(integer_in(1000, 1000000000))
       ->capture_default_str();

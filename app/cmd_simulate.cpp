@@ -243,7 +243,14 @@ void add_simulate_command(CLI::App& app) {
                   "the output is byte for byte the uninterrupted run's");
   cmd->add_option("--write-config", options->write_config,
                   "Also write the run's parameters as a TOML file that --config reads back");
-  set_callback_with_config(cmd, [options] { run_simulate(*options); });
+  const CLI::Option* relax =
+      cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
+  set_callback_with_config(cmd, [options, relax] {
+    // The default relaxation is EDMD's: a method that does not relax records none.
+    sim::Parameters& p = options->parameters;
+    if (relax->count() == 0 && !sim::method_relaxes(p.method)) p.relax_collisions_per_particle = 0;
+    run_simulate(*options);
+  });
 }
 
 }  // namespace molchaos::app

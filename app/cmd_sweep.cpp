@@ -29,6 +29,7 @@ struct SweepCliOptions {
   std::string out;
   int threads = 0;
   bool quiet = false;
+  bool relax_given = false;  // --relax on the command line or in the --config file
 };
 
 void run_sweep_command(SweepCliOptions& o) {
@@ -40,6 +41,10 @@ void run_sweep_command(SweepCliOptions& o) {
   const sim::ParameterInfo& method_row = *sim::find_parameter("method");
   for (const auto& m : o.methods)  // checked by the option
     o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
+  // The default relaxation is EDMD's: a sweep none of whose methods relaxes records none.
+  if (!o.relax_given &&
+      std::none_of(o.spec.methods.begin(), o.spec.methods.end(), sim::method_relaxes))
+    o.spec.relax_collisions_per_particle = 0;
   const std::string remedy = "each point once (use --seeds for more runs per point)";
   reject_repeated_values("--density", o.spec.densities, remedy);
   reject_repeated_values("--restitution", o.spec.restitutions, remedy);
@@ -138,14 +143,18 @@ void add_sweep_command(CLI::App& app) {
       ->check(real_in(0.0, false, 1e9, true))
       ->capture_default_str();
   add_parameter_option(cmd, "samples_per_decade", o->spec.samples_per_decade);
-  add_parameter_option(cmd, "relax_collisions_per_particle", o->spec.relax_collisions_per_particle);
+  CLI::Option* relax = add_parameter_option(cmd, "relax_collisions_per_particle",
+                                            o->spec.relax_collisions_per_particle);
   cmd->add_option("--cache", o->cache, "cache directory ('' for none)")->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV");
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
-  set_callback_with_config(cmd, [o] { run_sweep_command(*o); });
+  set_callback_with_config(cmd, [o, relax] {
+    o->relax_given = relax->count() > 0;
+    run_sweep_command(*o);
+  });
 }
 
 }  // namespace molchaos::app

@@ -113,10 +113,8 @@ template <class T>
 CLI::Option* add_parameter_list_option(CLI::App* cmd, std::string_view name,
                                        std::vector<T>& target) {
   const sim::ParameterInfo& info = parameter_row(name);
-  return cmd
-      ->add_option(std::string(info.flag), target, parameter_help(info) + " (comma separated)")
-      ->delimiter(',')
-      ->check(parameter_check(info));
+  return add_list_option(cmd, std::string(info.flag), target,
+                         parameter_help(info) + " (comma separated)", parameter_check(info));
 }
 
 }  // namespace molchaos::app

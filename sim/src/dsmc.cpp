@@ -11,6 +11,7 @@
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/contact_statistics.hpp"
 #include "molchaos/sim/dsmc_contact.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/version.hpp"
 
 namespace molchaos::sim {
@@ -35,6 +36,12 @@ void validate_dsmc(const Parameters& p) {
   if (p.tc != 0)
     throw std::invalid_argument("tc: value " + std::to_string(p.tc) +
                                 " is not allowed with method = dsmc; allowed value 0");
+  // A relaxation written in the header that did not happen would be a false record of the run.
+  if (p.relax_collisions_per_particle != 0)
+    throw std::invalid_argument(
+        "relax_collisions_per_particle: value " + message_number(p.relax_collisions_per_particle) +
+        " is not allowed with method = dsmc (it starts from the homogeneous Maxwellian state and "
+        "does no relaxation; relaxation applies to method = edmd only); allowed value 0");
   if (!p.snapshot_times.empty())
     throw std::invalid_argument(
         "snapshot_times: not allowed with method = dsmc (it has no positions); allowed: none");

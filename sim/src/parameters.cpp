@@ -39,6 +39,8 @@ bool method_runs_mode(Method method, Randomization mode) {
   return method == Method::edmd || mode == Randomization::none;
 }
 
+bool method_relaxes(Method method) { return method == Method::edmd; }
+
 double close_packing_density(int dimension) {
   // Hexagonal packing of disks, n = 2/sqrt(3); fcc packing of spheres, n = sqrt(2).
   return dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0);

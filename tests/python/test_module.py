@@ -120,14 +120,18 @@ def test_simulate_bad_parameter_names_it(name, value):
         molchaos.simulate(**kwargs)
 
 
+DSMC_SMALL = {k: v for k, v in SMALL.items() if k != "relax_collisions_per_particle"}
+
+
 def test_simulate_dsmc_equals_cli_run(molchaos_bin, tmp_path):
-    run = molchaos.simulate(**SMALL, method="dsmc")
+    run = molchaos.simulate(**DSMC_SMALL, method="dsmc")
     assert run["parameters"]["method"] == "dsmc"
+    assert run["parameters"]["relax_collisions_per_particle"] == 0  # DSMC does no relaxation
     out = tmp_path / "dsmc.csv"
     subprocess.run(
         [molchaos_bin, "simulate", "--method", "dsmc", "--dim", "2", "--particles", "200",
          "--density", "0.05", "--restitution", "0.9", "--seed", "3", "--t-end", "20",
-         "--relax", "5", "--samples-per-decade", "5", "--quiet", "--out", str(out)],
+         "--samples-per-decade", "5", "--quiet", "--out", str(out)],
         check=True, capture_output=True)
     frame, _ = molchaos.read_run_csv(out)
     np.testing.assert_array_equal(frame["T"].to_numpy(), run["T"])
@@ -139,6 +143,8 @@ def test_simulate_method_refuses_unknown_and_shuffles():
         molchaos.simulate(**SMALL, method="md")
     with pytest.raises(ValueError, match="randomize"):
         molchaos.simulate(**SMALL, method="dsmc", randomize="flux")
+    with pytest.raises(ValueError, match="relax_collisions_per_particle.*method = edmd only"):
+        molchaos.simulate(**SMALL, method="dsmc")
 
 
 def test_simulate_unknown_keyword():

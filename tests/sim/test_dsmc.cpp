@@ -88,6 +88,7 @@ Parameters gas_parameters(int d, std::int64_t particles, double restitution, std
   p.restitution = restitution;
   p.seed = seed;
   p.t_end = 1e300;
+  p.relax_collisions_per_particle = 0;  // DSMC does no relaxation
   return p;
 }
 
@@ -425,6 +426,9 @@ BOOST_AUTO_TEST_CASE(stops_and_bad_input) {
   bad.snapshot_times = {0.5};
   BOOST_TEST(message_of(bad).rfind("snapshot_times:", 0) == 0u);
   bad.snapshot_times.clear();
+  bad.relax_collisions_per_particle = 20;
+  BOOST_TEST(message_of(bad).rfind("relax_collisions_per_particle:", 0) == 0u);
+  bad.relax_collisions_per_particle = 0;
   bad.dimension = 4;
   BOOST_TEST(message_of(bad).rfind("dimension:", 0) == 0u);
   bad.dimension = 2;

@@ -57,6 +57,7 @@ EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
   s.methods = {sim::Method::dsmc};
   s.modes = {Randomization::none};
   s.seeds = seeds;
+  s.relax_collisions_per_particle = 0;  // DSMC does no relaxation
   return s;
 }
 

@@ -38,6 +38,13 @@ void validate(const EnsembleSpec& s) {
           fmt::format("methods: value {} runs mode none only, which is not among the listed modes; "
                       "add none to them",
                       method_name(method)));
+  if (s.relax_collisions_per_particle != 0 &&
+      std::none_of(s.methods.begin(), s.methods.end(), sim::method_relaxes))
+    throw std::invalid_argument(fmt::format(
+        "relax_collisions_per_particle: value {} is not allowed when no listed method relaxes "
+        "(method = dsmc starts from the homogeneous Maxwellian state; relaxation applies to "
+        "method = edmd only); allowed value 0",
+        s.relax_collisions_per_particle));
   if (s.seeds < 1 || s.seeds > 100000)
     throw std::invalid_argument("seeds: value " + std::to_string(s.seeds) +
                                 " is outside the allowed range [1, 100000]");
@@ -94,7 +101,9 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.randomize = kind.mode;
           p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
           p.t_end = t_end;
-          p.relax_collisions_per_particle = s.relax_collisions_per_particle;
+          // The spec's relaxation is its EDMD runs'; a DSMC run records the none it does.
+          p.relax_collisions_per_particle =
+              sim::method_relaxes(kind.method) ? s.relax_collisions_per_particle : 0.0;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
           p.method = kind.method;

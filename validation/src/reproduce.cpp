@@ -203,6 +203,7 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   R.dsmc_spec = R.fig4_spec;
   R.dsmc_spec.methods = {sim::Method::dsmc};
   R.dsmc_spec.modes = {sim::Randomization::none};
+  R.dsmc_spec.relax_collisions_per_particle = 0;  // DSMC does no relaxation
   R.dsmc_spec.seeds = steps::k_dsmc_seed_factor * cfg.seeds;
 }
 

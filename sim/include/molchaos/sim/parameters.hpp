@@ -34,6 +34,12 @@ std::optional<Randomization> parse_randomization(std::string_view text);
 /// only permutes velocities, which leaves the DSMC state unchanged).
 bool method_runs_mode(Method method, Randomization mode);
 
+/// Whether `method` relaxes the gas before t = 0: EDMD does (elastic collisions take the lattice
+/// start to a homogeneous fluid); DSMC does not, it starts from the homogeneous Maxwellian state,
+/// which elastic collisions leave as it is, so its relax_collisions_per_particle is 0. A front end
+/// that takes the table's default (made for EDMD) gives a method that does not relax 0 instead.
+bool method_relaxes(Method method);
+
 struct Parameters {
   int dimension = 2;
   std::int64_t particles = 5000;
