@@ -2,7 +2,11 @@
 // (checkpoint.hpp). A translation unit of its own rather than a part of engine.cpp: in engine.cpp
 // the extra functions changed GCC's inlining in the hot path (cross_cell, predict) and cost 3 %
 // more instructions per collision (bench/engine_counts.sh); here the engine compiles as without it.
+#include <algorithm>
+#include <cmath>
+#include <span>
 #include <string>
+#include <vector>
 #include <type_traits>
 #include <utility>
 
@@ -10,6 +14,9 @@
 #include "molchaos/sim/engine.hpp"
 
 namespace molchaos::sim {
+
+// Overlap allowed in a restored state: the debug overlap check's (engine.cpp).
+constexpr double k_restore_overlap_tolerance = 1e-10;
 
 // Exactness. The engine's future depends on more than positions and velocities: on the order of
 // the events in the calendar's bucket lists and of the members in the cell blocks (ties), on the
@@ -57,6 +64,71 @@ void Engine<D, Observer>::restore_state(CheckpointReader& in) {
   if (part_.size() != n || id_.size() != n || ev_.size() != n || last_collision_time_.size() != n ||
       (neighbour_lists_ && center_.size() != n * D))
     in.fail("engine arrays of another size than the parameters' N");
+  check_restored(in);
+}
+
+// A checkpoint whose checksum holds can still carry a state without sense (written by a faulty
+// build, or edited with the checksum recomputed). The engine would run it on, silently wrong or
+// into a dead-lock, so it is refused here, before any event, naming the first thing wrong: every
+// particle filed once, in the cell it names and lies in (by its list centre with neighbour
+// lists); finite positions inside the box (or within a shell of their list centres), velocities, local times no later than the clock, event partners that
+// exist; the kinetic energy the engine carries equal to the velocities'; no overlapping pair.
+template <int D, class Observer>
+void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
+  const std::int32_t n = n_;
+  auto particle = [&](std::int32_t i, const std::string& what) {
+    in.fail("particle " + std::to_string(i) + " " + what);
+  };
+  if (!std::isfinite(clock_.now) || clock_.now < 0) in.fail("internal clock not a finite time >= 0");
+  if (collisions_ > events_) in.fail("more collisions than events");
+  std::vector<char> seen(static_cast<std::size_t>(n), 0);
+  for (std::int32_t i = 0; i < n; ++i) {
+    const std::int32_t k = id_[i];
+    if (k < 0 || k >= n || seen[k]) particle(i, "has an original index that is out of range or repeated");
+    seen[k] = 1;
+  }
+  std::fill(seen.begin(), seen.end(), 0);
+  for (std::size_t c = 0; c < cells_; ++c) {
+    const std::span<const std::int32_t> members = cell_members(static_cast<int>(c));
+    if (members.size() > static_cast<std::size_t>(capacity_))
+      in.fail("cell " + std::to_string(c) + " holds more members than its block");
+    for (const std::int32_t i : members) {
+      if (i < 0 || i >= n || seen[i] || part_[i].cell != static_cast<int>(c))
+        in.fail("cell " + std::to_string(c) + " lists a particle that is out of range, listed "
+                "twice, or filed in another cell");
+      seen[i] = 1;
+    }
+  }
+  const double slack = 1e-9 * box_;
+  double sum_u2 = 0;
+  for (std::int32_t i = 0; i < n; ++i) {
+    const Particle& p = part_[i];
+    if (!seen[i]) particle(i, "is in no cell");
+    if (!std::isfinite(p.t) || p.t > clock_.now) particle(i, "has a local time that is not finite or lies after the clock");
+    double shift2 = 0;
+    int x[D];
+    coords_(p.cell, x);
+    for (int a = 0; a < D; ++a) {
+      if (!std::isfinite(p.r[a]) || !std::isfinite(p.v[a]))
+        particle(i, "has a position or velocity that is not finite");
+      const double reference = neighbour_lists_ ? center_[D * i + a] : p.r[a];
+      if (reference < -slack || reference > box_ + slack)
+        particle(i, "lies outside the box [0, " + std::to_string(box_) + "]");
+      if (reference < wall_[x[a]] - slack || reference > wall_[x[a] + 1] + slack)
+        particle(i, "lies outside the cell it is filed in");
+      shift2 += neighbour_lists_ ? (p.r[a] - reference) * (p.r[a] - reference) : 0.0;
+      sum_u2 += p.v[a] * p.v[a];
+    }
+    if (shift2 > (shell_ + slack) * (shell_ + slack)) particle(i, "lies outside its shell");
+    const EventData& e = ev_[i];
+    if (e.partner < -1 || e.partner >= n || std::isnan(e.coll_time) || std::isnan(e.cross_time))
+      particle(i, "has a pending event with no such partner or no time");
+  }
+  if (!(std::abs(sum_u2 - sum_u2_) <= 1e-6 * sum_u2))
+    in.fail("kinetic energy " + std::to_string(sum_u2_) + " differs from the velocities' " +
+            std::to_string(sum_u2));
+  if (const double d = min_pair_distance(); d < 1.0 - k_restore_overlap_tolerance)
+    in.fail("two particles overlap (closest pair at distance " + std::to_string(d) + " sigma)");
 }
 
 template <int D, class Observer>
@@ -79,6 +151,7 @@ std::string Engine<D, Observer>::checkpoint_layout() {
 #define MOLCHAOS_ENGINE_CHECKPOINT(D, Observer)                           \
   template void Engine<D, Observer>::save_state(CheckpointWriter&) const; \
   template void Engine<D, Observer>::restore_state(CheckpointReader&);    \
+  template void Engine<D, Observer>::check_restored(const CheckpointReader&) const; \
   template std::string Engine<D, Observer>::checkpoint_layout();
 MOLCHAOS_ENGINE_CHECKPOINT(2, NoObserver)
 MOLCHAOS_ENGINE_CHECKPOINT(3, NoObserver)

@@ -34,6 +34,9 @@ void save_run(CheckpointWriter& out, double done, double wall_seconds, const Run
 void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunResult& result) {
   std::uint64_t snapshots = 0;
   in(done, wall_seconds, result.samples, snapshots);
+  if (!(std::isfinite(done) && std::isfinite(wall_seconds) && wall_seconds >= 0))
+    in.fail("time reached or wall time spent (" + std::to_string(done) + ", " +
+            std::to_string(wall_seconds) + " s) not a finite time >= 0");
   if (snapshots > 1u << 20) in.fail("corrupt snapshot count");
   result.snapshots.resize(static_cast<std::size_t>(snapshots));
   for (Snapshot& snap : result.snapshots) in(snap.t, snap.box, snap.positions, snap.velocities);

@@ -121,6 +121,7 @@ class Engine {
   /// from the same parameters (not relaxed) continues exactly as the saved one would have.
   void save_state(CheckpointWriter& out) const;
   void restore_state(CheckpointReader& in);
+  void check_restored(const CheckpointReader& in) const;  // refuses a state without sense
   /// Sizes of the saved records (a checkpoint of another layout is refused).
   static std::string checkpoint_layout();
 

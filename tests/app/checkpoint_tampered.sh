@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Usage: checkpoint_tampered.sh MOLCHAOS EXPECT_USAGE_ERROR
+# A checkpoint whose state makes no sense but whose checksum holds (edited, the FNV-1a checksum
+# recomputed) is refused with exit status 2 and a line naming what is wrong, and nothing is
+# written: a run's wall time that is not finite, a position that is not finite or lies outside the box, a velocity changed behind the
+# kinetic energy the engine carries, a particle moved onto another (out of
+# the cell it is filed in). The untouched file resumes.
+set -u
+bin=$(realpath "$1")
+expect=$(realpath "$2")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
+args=(simulate --particles 400 --density 0.1 --restitution 0.9 --quiet)
+"$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
+  fail "run with checkpoints"
+# tamper OUT WHAT: ck with particle 0's record edited (x, y, vx, vy as doubles) and the checksum
+# recomputed.
+tamper() {
+  python3 - "$1" "$2" <<'PY' || fail "tamper $2"
+import re, struct, sys
+out, what = sys.argv[1], sys.argv[2]
+data = bytearray(open("ck", "rb").read())
+at = data.index(b"\n\n") + 2                      # the head ends with an empty line
+size = struct.unpack_from("<Q", data, at)[0]
+payload = at + 8
+sample = int(re.search(rb"^layout = .* sample (\d+)$", data[:at], re.M).group(1))
+# The run's part (done, wall seconds, the samples, the snapshot count: no snapshots here), then
+# the engine's, which opens with the particle array's length and particle 0's record.
+samples = struct.unpack_from("<Q", data, payload + 16)[0]
+engine = payload + 16 + 8 + samples * sample + 8
+assert struct.unpack_from("<Q", data, engine)[0] == 400, "layout of the payload not understood"
+record = engine + 8
+x, y, vx, vy = struct.unpack_from("<4d", data, record)
+if what == "nan":
+    struct.pack_into("<d", data, record, float("nan"))
+elif what == "outside":
+    struct.pack_into("<d", data, record, 1e6)
+elif what == "velocity":
+    struct.pack_into("<d", data, record + 16, 2 * vx + 1)
+elif what == "wall":
+    struct.pack_into("<d", data, payload + 8, float("nan"))
+elif what == "overlap":  # particle 1 (the next 48-byte record) onto particle 0, at its time
+    struct.pack_into("<2d", data, record + 48, x, y)
+h = 0xcbf29ce484222325
+for b in data[payload:payload + size]:
+    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+struct.pack_into("<Q", data, payload + size, h)
+open(out, "wb").write(data)
+PY
+}
+failures=0
+refused() {  # refused REGEX FILE: resuming from FILE is a usage error matching REGEX
+  "$expect" "$1" "$bin" "${args[@]}" --t-end 30 --out b.csv --restart "$2" >out.txt ||
+    { cat out.txt; failures=$((failures + 1)); }
+  head -1 out.txt
+}
+tamper nan_position nan
+refused "--restart.*particle 0 has a position or velocity that is not finite" nan_position
+tamper outside outside
+refused "--restart.*particle 0 lies outside the box" outside
+tamper velocity velocity
+refused "--restart.*kinetic energy .* differs from the velocities'" velocity
+tamper overlap overlap
+refused "--restart.*particle 1 lies outside the cell it is filed in" overlap
+tamper wall wall
+refused "--restart.*wall time .* not a finite time >= 0" wall
+[ ! -e b.csv ] || fail "an output written by a refused restart"
+"$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null || fail "the untouched checkpoint"
+[ "$failures" -eq 0 ] || fail "$failures tampered checkpoints not refused as such"
+echo "ok: every tampered checkpoint refused, naming what is wrong"
