@@ -3,6 +3,7 @@
 // read with `head`; the payload is the memory image of the run's state.
 #include "molchaos/sim/checkpoint.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -70,6 +71,8 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   auto refuse = [&](const std::string& what) -> CheckpointError {
     return CheckpointError("checkpoint " + path + ": " + what);
   };
+  // A folder opens as a stream but fails at the first read with the library's words.
+  if (std::error_code ec; !std::filesystem::is_regular_file(path, ec)) throw refuse("not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw refuse("cannot open");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

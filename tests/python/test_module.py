@@ -195,6 +195,8 @@ def test_simulate_restart_continues_exactly(tmp_path):
     assert continued["parameters"]["randomize"] == "paper"
     with pytest.raises(ValueError, match="restitution differs"):
         molchaos.simulate(**dict(kwargs, restitution=0.8), restart=ckpt)
+    with pytest.raises(ValueError, match="checkpoint .*: not a file"):
+        molchaos.simulate(**kwargs, restart=str(tmp_path))  # a folder: named, not a stream error
 
 
 def test_gil_released_during_run():
