@@ -6,9 +6,9 @@
 #include <cmath>
 #include <span>
 #include <string>
-#include <vector>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/engine.hpp"
@@ -71,20 +71,24 @@ void Engine<D, Observer>::restore_state(CheckpointReader& in) {
 // build, or edited with the checksum recomputed). The engine would run it on, silently wrong or
 // into a dead-lock, so it is refused here, before any event, naming the first thing wrong: every
 // particle filed once, in the cell it names and lies in (by its list centre with neighbour
-// lists); finite positions inside the box (or within a shell of their list centres), velocities, local times no later than the clock, event partners that
-// exist; the kinetic energy the engine carries equal to the velocities'; no overlapping pair.
+// lists); finite positions inside the box (or within a shell of their list centres), velocities,
+// local times no later than the clock, event partners that exist; the kinetic energy the engine
+// carries equal to the velocities' (to 1e-6: its running sum drifts by rounding far less between
+// two resyncs, which recompute it); no overlapping pair.
 template <int D, class Observer>
 void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   const std::int32_t n = n_;
   auto particle = [&](std::int32_t i, const std::string& what) {
     in.fail("particle " + std::to_string(i) + " " + what);
   };
-  if (!std::isfinite(clock_.now) || clock_.now < 0) in.fail("internal clock not a finite time >= 0");
+  if (!std::isfinite(clock_.now) || clock_.now < 0)
+    in.fail("internal clock not a finite time >= 0");
   if (collisions_ > events_) in.fail("more collisions than events");
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
   for (std::int32_t i = 0; i < n; ++i) {
     const std::int32_t k = id_[i];
-    if (k < 0 || k >= n || seen[k]) particle(i, "has an original index that is out of range or repeated");
+    if (k < 0 || k >= n || seen[k])
+      particle(i, "has an original index that is out of range or repeated");
     seen[k] = 1;
   }
   std::fill(seen.begin(), seen.end(), 0);
@@ -104,7 +108,8 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   for (std::int32_t i = 0; i < n; ++i) {
     const Particle& p = part_[i];
     if (!seen[i]) particle(i, "is in no cell");
-    if (!std::isfinite(p.t) || p.t > clock_.now) particle(i, "has a local time that is not finite or lies after the clock");
+    if (!std::isfinite(p.t) || p.t > clock_.now)
+      particle(i, "has a local time that is not finite or lies after the clock");
     double shift2 = 0;
     int x[D];
     coords_(p.cell, x);

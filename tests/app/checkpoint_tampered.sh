@@ -2,9 +2,9 @@
 # Usage: checkpoint_tampered.sh MOLCHAOS EXPECT_USAGE_ERROR
 # A checkpoint whose state makes no sense but whose checksum holds (edited, the FNV-1a checksum
 # recomputed) is refused with exit status 2 and a line naming what is wrong, and nothing is
-# written: a run's wall time that is not finite, a position that is not finite or lies outside the box, a velocity changed behind the
-# kinetic energy the engine carries, a particle moved onto another (out of
-# the cell it is filed in). The untouched file resumes.
+# written: a run's wall time that is not finite, a position that is not finite or lies outside
+# the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
+# another (out of the cell it is filed in). The untouched file resumes.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -65,6 +65,7 @@ refused "--restart.*particle 1 lies outside the cell it is filed in" overlap
 tamper wall wall
 refused "--restart.*wall time .* not a finite time >= 0" wall
 [ ! -e b.csv ] || fail "an output written by a refused restart"
-"$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null || fail "the untouched checkpoint"
+"$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null ||
+  fail "the untouched checkpoint"
 [ "$failures" -eq 0 ] || fail "$failures tampered checkpoints not refused as such"
 echo "ok: every tampered checkpoint refused, naming what is wrong"
