@@ -97,6 +97,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     restore_run(in, done, wall_before, result);
     engine.restore_state(in);
     in.finish();
+    engine.check_restored(in);  // a file from outside (a relaxed state here is this process's)
     // A new t_end keeps the sample grid below both ends: the samples taken stay valid.
     if (p.t_end != saved_t_end && !(engine.time() < p.t_end && done < p.t_end * (1 - 1e-12)))
       throw CheckpointError("checkpoint " + checkpoints.restart +
