@@ -168,7 +168,7 @@ template <int D, class Observer>
 template <bool Wrap>
 [[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::keep_neighbours(
     std::int32_t i, std::int32_t* cand, std::int32_t count, std::int32_t lower) const {
-  const double cutoff = 1.0 + 2.0 * shell_ + 1e-9;  // slack for rounding at the shell boundary
+  const double cutoff = list_cutoff() + 1e-9;  // slack for rounding at the shell boundary
   const double cutoff2 = cutoff * cutoff;
   const double* ci = &center_[D * i];
   std::int32_t found = 0;
@@ -221,7 +221,7 @@ template <bool Wrap>
 // and shorter than half the box (cutoff + 2 shell < box / 2).
 template <int D, class Observer>
 [[gnu::always_inline]] inline bool Engine<D, Observer>::list_needs_wrap(std::int32_t i) const {
-  const double margin = 1.0 + 3.0 * shell_ + 1e-9;
+  const double margin = list_cutoff() + shell_ + 1e-9;
   bool inside = true;
   for (int a = 0; a < D; ++a) {
     const double c = center_[D * i + a];

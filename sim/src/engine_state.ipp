@@ -24,7 +24,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
   last_collision_time_.assign(n, -k_inf);
   auto cell_width_for = [&](double occupancy) {
     return neighbour_lists_
-               ? 1.0 + 2.0 * shell_
+               ? list_cutoff()
                : std::max(1.0, std::pow(occupancy / p.density, 1.0 / static_cast<double>(D)));
   };
   // Whether the engine's data (with the cells for the cache, blocks of 8 ints) outgrow the cache.
@@ -184,7 +184,7 @@ void Engine<D, Observer>::build_neighbour_lists() {
   center_.resize(static_cast<std::size_t>(n_) * D);
   int capacity = 0;  // 0: keep the capacity the lists grew to
   if (lists_.capacity() == 0) {
-    const double cutoff = 1.0 + 2.0 * shell_;
+    const double cutoff = list_cutoff();
     const double expected = 4.0 / 3.0 * std::numbers::pi * cutoff * cutoff * cutoff *
                             static_cast<double>(n_) / std::pow(box_, 3);
     capacity = static_cast<int>(std::ceil(2 * expected + 8));

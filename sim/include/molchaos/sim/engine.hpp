@@ -121,7 +121,9 @@ class Engine {
   /// from the same parameters (not relaxed) continues exactly as the saved one would have.
   void save_state(CheckpointWriter& out) const;
   void restore_state(CheckpointReader& in);
-  void check_restored(const CheckpointReader& in) const;  // refuses a state without sense
+  /// Refuses (CheckpointError) a restored state without sense: for checkpoint files, which may
+  /// have been damaged or edited with their checksum recomputed.
+  void check_restored(const CheckpointReader& in) const;
   /// Sizes of the saved records (a checkpoint of another layout is refused).
   static std::string checkpoint_layout();
 
@@ -248,6 +250,8 @@ class Engine {
   // Neighbour lists (dense spheres only): shell centres and the lists.
   bool neighbour_lists_ = false;
   double shell_ = 0;
+  // A particle lists every particle whose shell centre lies within this of its own.
+  double list_cutoff() const { return 1.0 + 2.0 * shell_; }
   std::vector<double> center_;
   NeighbourLists lists_;
 
