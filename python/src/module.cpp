@@ -34,15 +34,69 @@ py::dict estimate(const theory::Estimate& e) {
   return d;
 }
 
+std::string repr_text(py::handle value) { return py::repr(value).cast<std::string>(); }
+
+[[noreturn]] void wrong_type(const std::string& name, const char* expected, py::handle value) {
+  throw py::type_error(name + ": expected " + expected + ", got " + repr_text(value) + " (" +
+                       py::type::handle_of(value).attr("__name__").cast<std::string>() + ")");
+}
+
+// A keyword's value as the parameter's C++ type, or a TypeError naming the parameter and the type
+// it takes. A bool is refused where a number is expected: Python's True is the integer 1, and
+// restitution=True would otherwise run silently as eps = 1. An int is taken where a real is
+// expected (restitution=1), as is any real with __float__ (numpy.float32); a float is never taken
+// where an integer is (particles=2.5).
+template <class T>
+T keyword_as(const std::string& name, py::handle value) {
+  PyObject* const o = value.ptr();
+  if constexpr (std::is_same_v<T, bool>) {
+    if (!PyBool_Check(o)) wrong_type(name, "True or False", value);
+  } else if constexpr (std::is_integral_v<T>) {
+    if (PyBool_Check(o) || !PyIndex_Check(o)) wrong_type(name, "an integer", value);
+  } else if constexpr (std::is_floating_point_v<T>) {
+    if (PyBool_Check(o) ||
+        !(PyFloat_Check(o) || PyIndex_Check(o) || py::hasattr(value, "__float__")))
+      wrong_type(name, "a real number", value);
+  } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+    if (PyUnicode_Check(o) || !PySequence_Check(o))
+      wrong_type(name, "a list of real numbers", value);
+    T out;
+    for (py::handle item : py::reinterpret_borrow<py::sequence>(value))
+      out.push_back(keyword_as<double>(name, item));
+    return out;
+  } else {
+    if (!PyUnicode_Check(o)) wrong_type(name, "a string", value);
+  }
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {  // an integer beyond the parameter's type: a value error
+    throw py::value_error(name + ": value " + repr_text(value) +
+                          " does not fit the parameter's type");
+  }
+}
+
+// A file name: a str or an os.PathLike (pathlib.Path), as Python's own file functions take.
+std::string path_keyword(const std::string& name, py::handle value) {
+  if (!PyUnicode_Check(value.ptr()) && !py::hasattr(value, "__fspath__"))
+    wrong_type(name, "a file name (str or os.PathLike)", value);
+  return keyword_as<std::string>(name, py::module_::import("os").attr("fspath")(value));
+}
+
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
-py::dict theory_prediction(int dim, double restitution, double density, double b,
-                           double tolerance) {
+py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
+                           py::handle b_arg, py::handle tolerance_arg) {
+  const int dim = keyword_as<int>("dim", dim_arg);
+  const double restitution = keyword_as<double>("restitution", restitution_arg);
+  const double density = keyword_as<double>("density", density_arg);
+  const double b = keyword_as<double>("b", b_arg);
+  const double tolerance = keyword_as<double>("tolerance", tolerance_arg);
   if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
   if (!(tolerance >= theory::k_min_relative_tolerance &&
         tolerance <= theory::k_max_relative_tolerance))
-    throw py::value_error("tolerance: value " +
-                          py::repr(py::float_(tolerance)).cast<std::string>() +
-                          " is outside the allowed range [1e-13, 1e-2]");
+    throw py::value_error("tolerance: value " + repr_text(py::float_(tolerance)) +
+                          " is outside the allowed range [" +
+                          repr_text(py::float_(theory::k_min_relative_tolerance)) + ", " +
+                          repr_text(py::float_(theory::k_max_relative_tolerance)) + "]");
   // Restitution, density (close packing, and where τ0 overflows) and b (where f2 and μ2 stay
   // positive): predict_cooling checks them and names them, the checks the CLI reports.
   theory::CoolingInputs inputs;
@@ -78,16 +132,6 @@ py::dict theory_prediction(int dim, double restitution, double density, double b
 }
 
 template <class T>
-T keyword_as(const std::string& name, py::handle value) {
-  try {
-    return value.cast<T>();
-  } catch (const py::cast_error&) {
-    throw py::value_error(name + ": cannot convert " + py::repr(value).cast<std::string>() +
-                          " to the parameter's type");
-  }
-}
-
-template <class T>
 constexpr bool is_plain_v =
     std::is_arithmetic_v<T> || std::is_same_v<T, std::vector<double>>;  // else: a named choice
 
@@ -101,18 +145,18 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     const auto name = item.first.cast<std::string>();
     const py::handle v = item.second;
     if (name == "checkpoint") {
-      checkpoints.path = keyword_as<std::string>(name, v);
+      checkpoints.path = path_keyword(name, v);
       continue;
     }
     if (name == "checkpoint_interval") {
       checkpoints.interval = keyword_as<double>(name, v);
       if (!(checkpoints.interval >= 0 && std::isfinite(checkpoints.interval)))
-        throw py::value_error("checkpoint_interval: value " + py::repr(v).cast<std::string>() +
+        throw py::value_error("checkpoint_interval: value " + repr_text(v) +
                               " is outside the allowed range [0, inf)");
       continue;
     }
     if (name == "restart") {
-      checkpoints.restart = keyword_as<std::string>(name, v);
+      checkpoints.restart = path_keyword(name, v);
       continue;
     }
     const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
@@ -235,9 +279,9 @@ PYBIND11_MODULE(_molchaos, m) {
   using namespace molchaos::python;
   m.doc() = "molchaos: kinetic theory and event-driven MD of granular gases (sigma = m = k_B = 1)";
   m.attr("__version__") = std::string(molchaos::k_version);
-  m.def("theory", &theory_prediction, py::kw_only(), py::arg("dim") = 2,
-        py::arg("restitution") = 0.9, py::arg("density") = 0.05, py::arg("b") = 0.0,
-        py::arg("tolerance") = 1e-10,
+  m.def("theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
+        py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
+        py::arg("b") = py::float_(0.0), py::arg("tolerance") = py::float_(1e-10),
         "Kinetic-theory prediction for one state point: g2, a2, mu2, tau0, A as "
         "{value, error} dicts.");
   m.def("simulate", &simulate,

@@ -147,6 +147,55 @@ def test_simulate_method_refuses_unknown_and_shuffles():
         molchaos.simulate(**SMALL, method="dsmc")
 
 
+@pytest.mark.parametrize("name,value,expected", [
+    ("restitution", True, "a real number"),     # Python's True is the integer 1: not eps = 1
+    ("density", "0.05", "a real number"),
+    ("particles", 2.5, "an integer"),
+    ("particles", False, "an integer"),
+    ("seed", 3.0, "an integer"),
+    ("contact_statistics", 1, "True or False"),
+    ("snapshot_times", "5", "a list of real numbers"),
+    ("snapshot_times", [5.0, True], "a real number"),
+    ("randomize", 1, "a string"),
+    ("checkpoint", 3, r"a file name \(str or os\.PathLike\)"),
+])
+def test_simulate_wrong_type_names_the_parameter_and_its_type(name, value, expected):
+    with pytest.raises(TypeError, match=rf"{name}: expected {expected}, got "):
+        molchaos.simulate(**dict(SMALL, **{name: value}))
+
+
+@pytest.mark.parametrize("name,value,expected", [
+    ("restitution", True, "a real number"), ("density", None, "a real number"),
+    ("dim", 2.0, "an integer"), ("tolerance", "1e-8", "a real number")])
+def test_theory_wrong_type_names_the_parameter_and_its_type(name, value, expected):
+    with pytest.raises(TypeError, match=rf"{name}: expected {expected}, got "):
+        molchaos.theory(**{name: value})
+
+
+def test_numbers_of_other_python_types_are_taken():
+    # An int where a real is expected, numpy scalars, a tuple or an array for a list of times,
+    # a pathlib.Path for a file: the same run as with the plain types.
+    plain = molchaos.simulate(**SMALL, snapshot_times=[5.0])
+    other = molchaos.simulate(**dict(SMALL, particles=np.int64(200), density=np.float64(0.05),
+                                     t_end=20, snapshot_times=np.array([5.0])))
+    np.testing.assert_array_equal(plain["T"], other["T"])
+    assert molchaos.theory(restitution=1)["A"] == molchaos.theory(restitution=1.0)["A"]
+    eps = np.float32(0.9)
+    assert molchaos.theory(restitution=eps)["restitution"] == float(eps)
+    # An integer beyond the parameter's C++ type is a value out of range, not a wrong type.
+    with pytest.raises(ValueError, match="seed: value -1 does not fit"):
+        molchaos.simulate(**dict(SMALL, seed=-1))
+    with pytest.raises(ValueError, match=f"particles: value {2**70} does not fit"):
+        molchaos.simulate(**dict(SMALL, particles=2**70))
+
+
+def test_checkpoint_takes_a_path_object(tmp_path):
+    path = tmp_path / "run.ckpt"
+    molchaos.simulate(**dict(SMALL, t_end=5.0), checkpoint=path, checkpoint_interval=1.0)
+    assert path.is_file()
+    assert molchaos.simulate(**SMALL, restart=path)["stop_reason"] == "t_end"
+
+
 def test_simulate_unknown_keyword():
     with pytest.raises(TypeError, match="restitutoin"):
         molchaos.simulate(restitutoin=0.9)
