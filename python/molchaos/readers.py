@@ -46,11 +46,24 @@ def _read_header(path):
     return metadata, comment_lines
 
 
+def _read_rows(path):
+    """The data rows of a suite's CSV file. Every file the suite writes ends with a newline, so
+    one that does not was cut short (a copy or download broken off): refused, where pandas would
+    fill the cut row's missing columns with NaN without a word."""
+    with open(path, "rb") as f:
+        f.seek(0, 2)
+        if f.tell() > 0:
+            f.seek(-1, 2)
+            if f.read(1) != b"\n":
+                raise ValueError(f"{path}: ends in the middle of a line (a truncated file?)")
+    return pd.read_csv(path, comment="#", float_precision="round_trip")
+
+
 def read_run_csv(path):
     """A `molchaos simulate --out` file: (DataFrame with columns t, T, a2, collisions, ...,
     metadata dict with the run's parameters, version, stop_reason)."""
     metadata, _ = _read_header(path)
-    frame = pd.read_csv(path, comment="#", float_precision="round_trip")
+    frame = _read_rows(path)
     if "rows" in metadata and metadata["rows"] != len(frame):
         raise ValueError(f"{path}: header says {metadata['rows']} rows, file has {len(frame)}")
     return frame, metadata
@@ -59,14 +72,14 @@ def read_run_csv(path):
 def read_snapshot_csv(path):
     """A snapshot file written next to a run CSV (`--snapshot-times`): (DataFrame, metadata)."""
     metadata, _ = _read_header(path)
-    return pd.read_csv(path, comment="#", float_precision="round_trip"), metadata
+    return _read_rows(path), metadata
 
 
 def read_table(path):
     """A summary table of `molchaos reproduce` (e.g. fig4_A_of_eps.csv): (DataFrame, metadata
     from its `#` lines, possibly empty)."""
     metadata, _ = _read_header(path)
-    return pd.read_csv(path, comment="#", float_precision="round_trip"), metadata
+    return _read_rows(path), metadata
 
 
 def read_trajectory(path):

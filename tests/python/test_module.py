@@ -269,3 +269,26 @@ def test_gil_released_during_run():
     # Held, the GIL would let the counter tick at most a few times around the run; released, it
     # ticks about once per millisecond (asserted: a tenth of that, for a loaded machine).
     assert len(ticks) > 0.1 * elapsed / 0.001
+
+
+def test_readers_refuse_truncated_files(molchaos_bin, tmp_path):
+    # A file cut short is refused, never read as fewer rows or as a row of NaN.
+    out = tmp_path / "run.csv"
+    subprocess.run(
+        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
+         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
+         "--snapshot-times", "5", "--quiet", "--out", str(out)],
+        check=True, capture_output=True)
+    frame, meta = molchaos.read_run_csv(out)  # whole: read
+    text = out.read_bytes()
+    cut = tmp_path / "cut.csv"
+    cut.write_bytes(text[: text.rindex(b",")])  # inside the last row
+    with pytest.raises(ValueError, match="ends in the middle of a line"):
+        molchaos.read_run_csv(cut)
+    cut.write_bytes(text[: text.rindex(b"\n", 0, len(text) - 1) + 1])  # the last row left out
+    with pytest.raises(ValueError, match=rf"header says {len(frame)} rows, file has {len(frame) - 1}"):
+        molchaos.read_run_csv(cut)
+    snapshot = (tmp_path / "run.snapshot0.csv").read_bytes()
+    cut.write_bytes(snapshot[:-5])
+    with pytest.raises(ValueError, match="ends in the middle of a line"):
+        molchaos.read_snapshot_csv(cut)
