@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Usage: checkpoint_restart.sh MOLCHAOS DIM RANDOMIZE PARTICLES T_END DENSITY
 # A run interrupted and continued with --restart writes the same bytes as the uninterrupted run:
-# stopped by a checkpoint interval (a shorter run continued to a later t_end, and the last interval
-# checkpoint of a whole run), by SIGTERM and SIGINT (a checkpoint, exit status 3), and killed by
-# SIGKILL between wall-clock checkpoints (continued from the last one). Contact statistics and a
-# snapshot are on (and a dense case uses neighbour lists), so the observers' accumulators and pending outputs are part of the state.
+# stopped by a checkpoint interval (a shorter run continued to a later t_end, once or twice, and
+# the last interval checkpoint of a whole run), by SIGTERM and SIGINT (a checkpoint, exit status
+# 3), and killed by SIGKILL between wall-clock checkpoints (continued from the last one). Contact
+# statistics and a snapshot are on (and a dense case uses neighbour lists), so the observers'
+# accumulators and pending outputs are part of the state.
 set -u
 set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1") dim=$2 mode=$3 particles=$4 t_end=$5 density=$6
@@ -29,6 +30,13 @@ same() {  # same <name>: name.csv and its snapshot equal the reference's, byte f
 "$bin" "${args[@]}" --t-end "$t_end" --out interval.csv --restart short.ckpt 2>/dev/null ||
   fail "restart to a later t_end"
 same interval
+# Continued twice: from short.ckpt to t_end / 2 (checkpointing on), then from its last checkpoint
+# to the full t_end.
+"$bin" "${args[@]}" --t-end "$(frac 2)" --out half.csv --restart short.ckpt --checkpoint half.ckpt \
+  --checkpoint-interval "$(frac 40)" 2>/dev/null || fail "first restart, to t_end / 2"
+"$bin" "${args[@]}" --t-end "$t_end" --out twice.csv --restart half.ckpt 2>/dev/null ||
+  fail "second restart, to t_end"
+same twice
 # The last interval checkpoint of a whole run, continued (and checkpointing on) to the end.
 "$bin" "${args[@]}" --t-end "$t_end" --out whole.csv --checkpoint whole.ckpt \
   --checkpoint-interval "$(frac 3)" 2>/dev/null || fail "run with checkpoints"
