@@ -247,8 +247,9 @@ void add_simulate_command(CLI::App& app) {
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
   set_callback_with_config(cmd, [options, relax] {
     // The default relaxation is EDMD's: a method that does not relax records none.
-    sim::Parameters& p = options->parameters;
-    if (relax->count() == 0 && !sim::method_relaxes(p.method)) p.relax_collisions_per_particle = 0;
+    sim::Parameters& run = options->parameters;
+    if (relax->count() == 0 && !sim::method_relaxes(run.method))
+      run.relax_collisions_per_particle = 0;
     run_simulate(*options);
   });
 }
