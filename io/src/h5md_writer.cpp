@@ -5,6 +5,7 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
@@ -81,10 +82,21 @@ hid_t untimed(hid_t kind) {
   return plist;
 }
 
+// A dataset of the given shape. A time series (value, time, step of a time-dependent element)
+// has the [variable] time dimension H5MD asks for: the first dimension unlimited, stored in
+// chunks of one frame (value) or of all frames (time, step), so that a reader may append.
 void dataset(hid_t where, const char* name, hid_t type, const std::vector<hsize_t>& shape,
-             const void* data) {
-  Handle space{H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose};
+             const void* data, bool time_series = false) {
+  std::vector<hsize_t> max_shape = shape;
+  if (time_series) max_shape[0] = H5S_UNLIMITED;
+  Handle space{H5Screate_simple(static_cast<int>(shape.size()), shape.data(), max_shape.data()),
+               H5Sclose};
   const Handle plist{untimed(H5P_DATASET_CREATE), H5Pclose};
+  if (time_series) {
+    std::vector<hsize_t> chunk = shape;
+    chunk[0] = shape.size() > 1 ? 1 : std::max<hsize_t>(shape[0], 1);
+    check_status(H5Pset_chunk(plist.id, static_cast<int>(chunk.size()), chunk.data()), name);
+  }
   Handle set{
       check(H5Dcreate2(where, name, type, space.id, H5P_DEFAULT, plist.id, H5P_DEFAULT), name),
       H5Dclose};
@@ -112,9 +124,9 @@ void time_series(hid_t particles, const char* name, const sim::RunResult& r, boo
     step.push_back(static_cast<std::int64_t>(k));
   }
   Handle element = group(particles, name);
-  dataset(element.id, "value", H5T_IEEE_F64LE, {frames, n, d}, value.data());
-  dataset(element.id, "time", H5T_IEEE_F64LE, {frames}, time.data());
-  dataset(element.id, "step", H5T_STD_I64LE, {frames}, step.data());
+  dataset(element.id, "value", H5T_IEEE_F64LE, {frames, n, d}, value.data(), true);
+  dataset(element.id, "time", H5T_IEEE_F64LE, {frames}, time.data(), true);
+  dataset(element.id, "step", H5T_STD_I64LE, {frames}, step.data(), true);
 }
 
 void parameters_group(hid_t file, const sim::RunResult& r) {

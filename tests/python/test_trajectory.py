@@ -46,6 +46,9 @@ def test_h5md_layout_and_values(run):
             assert value.dtype == np.float64 and value.shape == (len(TIMES), 150, dim)
             np.testing.assert_array_equal(el["time"][()], [m["t"] for _, m in snaps])
             np.testing.assert_array_equal(el["step"][()], np.arange(len(TIMES)))
+            for series in ("value", "time", "step"):  # H5MD's [variable] time dimension
+                assert el[series].maxshape[0] is None, series
+                assert el[series].maxshape[1:] == el[series].shape[1:], series
             for k, (frame, _) in enumerate(snaps):
                 np.testing.assert_array_equal(value[k], frame[cols].to_numpy())
         np.testing.assert_array_equal(box["edges"][()], [snaps[0][1]["box"]] * dim)
