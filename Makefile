@@ -6,6 +6,8 @@
 BUILD     ?= build
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 QUICK     ?= 0
+# Extra CMake settings, e.g. CMAKE_ARGS=-DMOLCHAOS_WITH_MPI=OFF (no MPI driver).
+CMAKE_ARGS ?=
 RESULTS   ?= results
 
 # The one list of Debian packages the project needs (build, test, figures, benchmarks, MPI).
@@ -37,10 +39,10 @@ deps:
 	apt-get update -q && apt-get install -y -q --no-install-recommends $$missing
 
 $(BUILD)/CMakeCache.txt: | deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
 configure: deps
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
