@@ -246,10 +246,7 @@ void add_simulate_command(CLI::App& app) {
   const CLI::Option* relax =
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
   set_callback_with_config(cmd, [options, relax] {
-    // The default relaxation is EDMD's: a method that does not relax records none.
-    sim::Parameters& run = options->parameters;
-    if (relax->count() == 0 && !sim::method_relaxes(run.method))
-      run.relax_collisions_per_particle = 0;
+    if (relax->count() == 0) sim::default_relaxation_for_method(options->parameters);
     run_simulate(*options);
   });
 }

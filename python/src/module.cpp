@@ -180,10 +180,8 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
         },
         info->field);
   }
-  // The default relaxation is EDMD's: a method that does not relax records none.
-  if (given.count(sim::find_parameter("relax_collisions_per_particle")) == 0 &&
-      !sim::method_relaxes(p.method))
-    p.relax_collisions_per_particle = 0;
+  if (given.count(sim::find_parameter("relax_collisions_per_particle")) == 0)
+    sim::default_relaxation_for_method(p);
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
   if (!checkpoints.path.empty()) {

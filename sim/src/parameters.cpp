@@ -41,6 +41,10 @@ bool method_runs_mode(Method method, Randomization mode) {
 
 bool method_relaxes(Method method) { return method == Method::edmd; }
 
+void default_relaxation_for_method(Parameters& p) {
+  if (!method_relaxes(p.method)) p.relax_collisions_per_particle = 0;
+}
+
 double close_packing_density(int dimension) {
   // Hexagonal packing of disks, n = 2/sqrt(3); fcc packing of spheres, n = sqrt(2).
   return dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0);

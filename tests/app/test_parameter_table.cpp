@@ -53,7 +53,7 @@ sim::Parameters changed(const sim::Parameters& base, const sim::ParameterInfo& i
       },
       info.field);
   // The one field that follows another: a method that does not relax has relax 0.
-  if (!sim::method_relaxes(p.method)) p.relax_collisions_per_particle = 0;
+  sim::default_relaxation_for_method(p);
   return p;
 }
 

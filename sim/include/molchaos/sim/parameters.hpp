@@ -36,8 +36,8 @@ bool method_runs_mode(Method method, Randomization mode);
 
 /// Whether `method` relaxes the gas before t = 0: EDMD does (elastic collisions take the lattice
 /// start to a homogeneous fluid); DSMC does not, it starts from the homogeneous Maxwellian state,
-/// which elastic collisions leave as it is, so its relax_collisions_per_particle is 0. A front end
-/// that takes the table's default (made for EDMD) gives a method that does not relax 0 instead.
+/// which elastic collisions leave as it is, so its relax_collisions_per_particle is 0 (the table's
+/// default is made for EDMD: default_relaxation_for_method below).
 bool method_relaxes(Method method);
 
 struct Parameters {
@@ -68,5 +68,9 @@ double box_side(const Parameters& p);
 /// Throws std::invalid_argument("<field>: value X is outside the allowed range ...") for the first
 /// field out of range.
 void validate(const Parameters& p);
+
+/// The relaxation of a run whose relax_collisions_per_particle was not given: the table's default
+/// (EDMD's) kept for a method that relaxes, 0 for one that does not. Every front end applies it.
+void default_relaxation_for_method(Parameters& p);
 
 }  // namespace molchaos::sim
