@@ -69,6 +69,15 @@ def test_theory_refuses_b_where_mu2_vanishes():
 
 SMALL = dict(dim=2, particles=200, density=0.05, restitution=0.9, seed=3, t_end=20.0,
              relax_collisions_per_particle=5.0, samples_per_decade=5)
+# The same run by the CLI (the relaxation flag left to the caller: DSMC takes none).
+SMALL_FLAGS = ["--dim", "2", "--particles", "200", "--density", "0.05", "--restitution", "0.9",
+               "--seed", "3", "--t-end", "20", "--samples-per-decade", "5", "--quiet"]
+
+
+def simulate_cli(molchaos_bin, out, *flags):
+    """`molchaos simulate` of SMALL with extra flags, written to out."""
+    subprocess.run([molchaos_bin, "simulate", *SMALL_FLAGS, *flags, "--out", str(out)],
+                   check=True, capture_output=True)
 
 
 def test_simulate_equals_cli_run(molchaos_bin, tmp_path):
@@ -79,11 +88,7 @@ def test_simulate_equals_cli_run(molchaos_bin, tmp_path):
     assert run["stop_reason"] == "t_end"
     assert run["parameters"]["particles"] == 200
     out = tmp_path / "run.csv"
-    subprocess.run(
-        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
-         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
-         "--samples-per-decade", "5", "--quiet", "--out", str(out)],
-        check=True, capture_output=True)
+    simulate_cli(molchaos_bin, out, "--relax", "5")
     frame, meta = molchaos.read_run_csv(out)
     # Same seed, same engine: the same trajectory, so the same doubles.
     np.testing.assert_array_equal(frame["t"].to_numpy(), run["t"])
@@ -128,11 +133,7 @@ def test_simulate_dsmc_equals_cli_run(molchaos_bin, tmp_path):
     assert run["parameters"]["method"] == "dsmc"
     assert run["parameters"]["relax_collisions_per_particle"] == 0  # DSMC does no relaxation
     out = tmp_path / "dsmc.csv"
-    subprocess.run(
-        [molchaos_bin, "simulate", "--method", "dsmc", "--dim", "2", "--particles", "200",
-         "--density", "0.05", "--restitution", "0.9", "--seed", "3", "--t-end", "20",
-         "--samples-per-decade", "5", "--quiet", "--out", str(out)],
-        check=True, capture_output=True)
+    simulate_cli(molchaos_bin, out, "--method", "dsmc")
     frame, _ = molchaos.read_run_csv(out)
     np.testing.assert_array_equal(frame["T"].to_numpy(), run["T"])
     assert molchaos.simulate(**SMALL)["parameters"]["method"] == "edmd"
@@ -216,12 +217,7 @@ def test_simulate_refuses_dim_and_dimension_together():
 
 def test_simulate_snapshots_match_snapshot_csv(molchaos_bin, tmp_path):
     run = molchaos.simulate(**SMALL, snapshot_times=[5.0])
-    out = tmp_path / "run.csv"
-    subprocess.run(
-        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
-         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
-         "--samples-per-decade", "5", "--snapshot-times", "5", "--quiet", "--out", str(out)],
-        check=True, capture_output=True)
+    simulate_cli(molchaos_bin, tmp_path / "run.csv", "--relax", "5", "--snapshot-times", "5")
     frame, meta = molchaos.read_snapshot_csv(tmp_path / "run.snapshot0.csv")
     snap = run["snapshots"][0]
     assert meta["t"] == snap["t"] and meta["box"] == snap["box"]
@@ -274,12 +270,8 @@ def test_gil_released_during_run():
 def test_readers_refuse_truncated_files(molchaos_bin, tmp_path):
     # A file cut short is refused, never read as fewer rows or as a row of NaN.
     out = tmp_path / "run.csv"
-    subprocess.run(
-        [molchaos_bin, "simulate", "--dim", "2", "--particles", "200", "--density", "0.05",
-         "--restitution", "0.9", "--seed", "3", "--t-end", "20", "--relax", "5",
-         "--snapshot-times", "5", "--quiet", "--out", str(out)],
-        check=True, capture_output=True)
-    frame, meta = molchaos.read_run_csv(out)  # whole: read
+    simulate_cli(molchaos_bin, out, "--relax", "5", "--snapshot-times", "5")
+    frame, _ = molchaos.read_run_csv(out)  # whole: read
     text = out.read_bytes()
     cut = tmp_path / "cut.csv"
     cut.write_bytes(text[: text.rindex(b",")])  # inside the last row
