@@ -280,8 +280,8 @@ PYBIND11_MODULE(_molchaos, m) {
   m.def("theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
         py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
         py::arg("b") = py::float_(0.0), py::arg("tolerance") = py::float_(1e-10),
-        "Kinetic-theory prediction for one state point: g2, a2, mu2, tau0, A as "
-        "{value, error} dicts.");
+        "Kinetic-theory prediction for one state point (dim: int, 2 or 3; restitution, density, "
+        "b, tolerance: real numbers): g2, a2, mu2, tau0, A as {value, error} dicts.");
   m.def("simulate", &simulate,
         "One cooling run. Keyword arguments are the fields of sim::Parameters (dim, particles, "
         "density, restitution, randomize, seed, t_end, ...), validated like the CLI's flags; "
