@@ -2,11 +2,13 @@
 # The same seed gives the same bytes on every build of this tree, whatever its compiler flags
 # (-march=native included: contraction is off): runs the cases of trajectory_cases.sh with
 # MOLCHAOS and compares the SHA-256 of every CSV it writes (the version line left out) with
-# trajectory_fingerprints.txt, recorded with the baseline x86-64 build. An engine change that
-# should keep trajectories fails here when it does not.
+# trajectory_fingerprints.txt, recorded with the baseline x86-64 build on Debian 12 (GCC 12,
+# glibc 2.36: the initial velocities go through libm's log, sin and cos, which another C library
+# may round differently). An engine change that should keep trajectories fails here when it does
+# not.
 # Usage: tests/sim/trajectory_fingerprints.sh MOLCHAOS [--record]
 # --record rewrites the fingerprints: only for an engine change that alters event order on
-# purpose, said in its commit (check_trajectories.sh shows which cases change). About 30 seconds.
+# purpose, said in its commit (check_trajectories.sh shows which cases change). A few seconds.
 set -euo pipefail
 exe=${1:?usage: trajectory_fingerprints.sh MOLCHAOS [--record]}
 mode=${2:-check}
