@@ -47,7 +47,6 @@ constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
 // slots per particle (32 instead of 64 bytes).
 template <int D>
 constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
-constexpr double k_overlap_tolerance = 1e-10;
 // Engine data beyond a core's L2 cache (2 MB here). Software prefetches (of the next event's and
 // of the candidates' records) only pay then; below, they are extra instructions (8 % of them for
 // the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve

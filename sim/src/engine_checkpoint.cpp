@@ -15,9 +15,6 @@
 
 namespace molchaos::sim {
 
-// Overlap allowed in a restored state: the debug overlap check's (engine.cpp).
-constexpr double k_restore_overlap_tolerance = 1e-10;
-
 // Exactness. The engine's future depends on more than positions and velocities: on the order of
 // the events in the calendar's bucket lists and of the members in the cell blocks (ties), on the
 // lazily advanced particle clocks, the collision counters that invalidate stale events, and the
@@ -131,7 +128,7 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   if (!(std::abs(sum_u2 - sum_u2_) <= 1e-6 * sum_u2))
     in.fail("kinetic energy " + std::to_string(sum_u2_) + " differs from the velocities' " +
             std::to_string(sum_u2));
-  if (const double d = min_pair_distance(); d < 1.0 - k_restore_overlap_tolerance)
+  if (const double d = min_pair_distance(); d < 1.0 - k_overlap_tolerance)
     in.fail("two particles overlap (closest pair at distance " + std::to_string(d) + " sigma)");
 }
 

@@ -82,6 +82,9 @@ class Engine {
   /// Smallest pair distance now (cell-list search over neighbouring cells); the engine guarantees
   /// it is never below 1 - 1e-10. For tests and the debug check.
   double min_pair_distance() const;
+  /// How far below contact (sigma) the closest pair may lie before the overlap checks (the debug
+  /// check during a run, the sense check of a restored checkpoint) call it an overlap.
+  static constexpr double k_overlap_tolerance = 1e-10;
   /// Throws std::logic_error if a pair is closer than 1 - 1e-10.
   void check_overlaps() const;
 
