@@ -50,17 +50,6 @@ EnsembleSpec study_spec(const CorrelationStudyConfig& cfg, int d, std::vector<do
   return s;
 }
 
-// The DSMC twin of an MD contact ensemble: same points, its own seeds, mode none (the method's
-// only one).
-EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
-  EnsembleSpec s = md;
-  s.methods = {sim::Method::dsmc};
-  s.modes = {Randomization::none};
-  s.seeds = seeds;
-  s.relax_collisions_per_particle = 0;  // DSMC does no relaxation
-  return s;
-}
-
 std::vector<sim::Parameters> with_snapshots(const CorrelationStudyConfig& cfg,
                                             const EnsembleSpec& spec) {
   auto runs = expand(spec);

@@ -113,6 +113,15 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
   return runs;
 }
 
+EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
+  EnsembleSpec s = md;
+  s.methods = {sim::Method::dsmc};
+  s.modes = {sim::Randomization::none};
+  s.seeds = seeds;
+  s.relax_collisions_per_particle = 0;
+  return s;
+}
+
 std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<RunOutcome>& runs,
                                    const WindowRule& rule) {
   std::vector<PointResult> points;

@@ -200,11 +200,7 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   R.elastic_spec.contact_statistics = false;
   // DSMC runs cost milliseconds: several times the MD's seeds buy error bars several times
   // smaller, so that a difference between the flux gas and DSMC is the MD's to explain.
-  R.dsmc_spec = R.fig4_spec;
-  R.dsmc_spec.methods = {sim::Method::dsmc};
-  R.dsmc_spec.modes = {sim::Randomization::none};
-  R.dsmc_spec.relax_collisions_per_particle = 0;  // DSMC does no relaxation
-  R.dsmc_spec.seeds = steps::k_dsmc_seed_factor * cfg.seeds;
+  R.dsmc_spec = dsmc_twin(R.fig4_spec, steps::k_dsmc_seed_factor * cfg.seeds);
 }
 
 // One sweep for all three ensembles (one load-balanced pool), then the summaries per point.

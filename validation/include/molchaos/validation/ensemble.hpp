@@ -62,6 +62,10 @@ double theory_tau0(int dimension, double density, double restitution);
 /// modes and restitutions at one density start from the same relaxed configurations).
 std::vector<sim::Parameters> expand(const EnsembleSpec& spec);
 
+/// The DSMC twin of an MD ensemble: the same state points, `seeds` seeds, mode none (the method's
+/// only one) and no relaxation (DSMC does none).
+EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds);
+
 struct PointResult {
   PointSummary summary;
   sim::Method method = sim::Method::edmd;
