@@ -1,5 +1,6 @@
 // H5MD 1.1 (de Buyl, Colberg, Höfling, 2014; nongnu.org/h5md/h5md.html) through the HDF5 C API.
-// Every time-dependent element is a group {value [F x N x d], time [F], step [F]}.
+// Every time-dependent element is a group {value [F x N x d], time [F], step [F]}. An event-driven
+// run has no integration step: a frame's step is the number of collisions since t = 0.
 #include "molchaos/io/h5md_writer.hpp"
 
 #include <hdf5.h>
@@ -108,7 +109,7 @@ Handle group(hid_t where, const char* name) {
   return {check(H5Gcreate2(where, name, H5P_DEFAULT, plist.id, H5P_DEFAULT), name), H5Gclose};
 }
 
-// One time-dependent element: value (F x N x d), time (F), step (F).
+// One time-dependent element: value (F x N x d), time (F), step (F, collisions since t = 0).
 void time_series(hid_t particles, const char* name, const sim::RunResult& r, bool positions) {
   const auto d = static_cast<hsize_t>(r.parameters.dimension);
   const auto frames = static_cast<hsize_t>(r.snapshots.size());
@@ -116,12 +117,11 @@ void time_series(hid_t particles, const char* name, const sim::RunResult& r, boo
   std::vector<double> value;
   std::vector<double> time;
   std::vector<std::int64_t> step;
-  for (std::size_t k = 0; k < r.snapshots.size(); ++k) {
-    const auto& s = r.snapshots[k];
+  for (const sim::Snapshot& s : r.snapshots) {
     const auto& data = positions ? s.positions : s.velocities;
     value.insert(value.end(), data.begin(), data.end());
     time.push_back(s.t);
-    step.push_back(static_cast<std::int64_t>(k));
+    step.push_back(static_cast<std::int64_t>(s.collisions));
   }
   Handle element = group(particles, name);
   dataset(element.id, "value", H5T_IEEE_F64LE, {frames, n, d}, value.data(), true);

@@ -30,7 +30,8 @@ void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
   const std::string z = dimension == 3 ? L : "1";
   out << n << '\n'
       << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
-      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << num(s.t) << " pbc=\""
+      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << num(s.t)
+      << " Collisions=" << s.collisions << " pbc=\""
       << (dimension == 3 ? "T T T" : "T T F") << "\"\n";
   for (std::size_t i = 0; i < n; ++i) {
     out << 'X';

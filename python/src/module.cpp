@@ -256,6 +256,7 @@ py::dict simulate(const py::kwargs& kwargs) {
     py::dict sd;
     sd["t"] = snap.t;
     sd["box"] = snap.box;
+    sd["collisions"] = snap.collisions;
     sd["positions"] = particle_matrix(snap.positions, p.dimension);
     sd["velocities"] = particle_matrix(snap.velocities, p.dimension);
     snapshots.append(sd);

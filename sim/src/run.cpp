@@ -28,7 +28,7 @@ constexpr std::uint64_t k_progress_events = 1u << 20;
 void save_run(CheckpointWriter& out, double done, double wall_seconds, const RunResult& result) {
   out(done, wall_seconds, result.samples, static_cast<std::uint64_t>(result.snapshots.size()));
   for (const Snapshot& snap : result.snapshots)
-    out(snap.t, snap.box, snap.positions, snap.velocities);
+    out(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
 }
 
 void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunResult& result) {
@@ -39,12 +39,13 @@ void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunRe
             std::to_string(wall_seconds) + " s) not a finite time >= 0");
   if (snapshots > 1u << 20) in.fail("corrupt snapshot count");
   result.snapshots.resize(static_cast<std::size_t>(snapshots));
-  for (Snapshot& snap : result.snapshots) in(snap.t, snap.box, snap.positions, snap.velocities);
+  for (Snapshot& snap : result.snapshots) in(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
 }
 
 template <class RunEngine>
 std::string run_layout() {
-  return RunEngine::checkpoint_layout() + " sample " + std::to_string(sizeof(Sample));
+  return RunEngine::checkpoint_layout() + " sample " + std::to_string(sizeof(Sample)) +
+         " snapshot " + std::to_string(sizeof(Snapshot));
 }
 
 // The relaxation, or its end state restored from an earlier run of the same key

@@ -23,7 +23,7 @@ data = bytearray(open("ck", "rb").read())
 at = data.index(b"\n\n") + 2                      # the head ends with an empty line
 size = struct.unpack_from("<Q", data, at)[0]
 payload = at + 8
-sample = int(re.search(rb"^layout = .* sample (\d+)$", data[:at], re.M).group(1))
+sample = int(re.search(rb"^layout = .* sample (\d+)( |$)", data[:at], re.M).group(1))
 # The run's part (done, wall seconds, the samples, the snapshot count: no snapshots here), then
 # the engine's, which opens with the particle array's length and particle 0's record.
 samples = struct.unpack_from("<Q", data, payload + 16)[0]

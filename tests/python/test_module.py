@@ -221,6 +221,7 @@ def test_simulate_snapshots_match_snapshot_csv(molchaos_bin, tmp_path):
     frame, meta = molchaos.read_snapshot_csv(tmp_path / "run.snapshot0.csv")
     snap = run["snapshots"][0]
     assert meta["t"] == snap["t"] and meta["box"] == snap["box"]
+    assert 0 < snap["collisions"] < run["total_collisions"]  # collisions before t = 5
     np.testing.assert_array_equal(frame[["x", "y"]].to_numpy(), snap["positions"])
     np.testing.assert_array_equal(frame[["vx", "vy"]].to_numpy(), snap["velocities"])
 

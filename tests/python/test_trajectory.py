@@ -11,7 +11,7 @@ import pytest
 
 import molchaos
 
-TIMES = [2.0, 5.0]
+TIMES = [2.0, 6.0]  # the last at t_end, where the run CSV's last row counts the collisions
 
 
 @pytest.fixture(scope="module", params=[2, 3])
@@ -26,6 +26,19 @@ def run(request, molchaos_bin, tmp_path_factory):
         check=True, capture_output=True)
     snaps = [molchaos.read_snapshot_csv(d / f"run.snapshot{k}.csv") for k in range(len(TIMES))]
     return dim, d, snaps
+
+
+def collisions_at_snapshots(d):
+    """The collisions since t = 0 at each snapshot time, from the run CSV's samples (a frame's
+    step in H5MD, its Collisions in extended XYZ): the sample at the last snapshot, t_end, and a
+    count strictly between 0 and it for the one before."""
+    table, _ = molchaos.read_run_csv(d / "run.csv")
+    with h5py.File(d / "run.h5", "r") as f:
+        step = f["particles/all/position/step"][()]
+    assert table["t"].iloc[-1] == TIMES[-1]
+    assert step[-1] == table["collisions"].iloc[-1]
+    assert 0 < step[0] < step[-1]
+    return step
 
 
 def test_h5md_layout_and_values(run):
@@ -45,7 +58,7 @@ def test_h5md_layout_and_values(run):
             value = el["value"][()]
             assert value.dtype == np.float64 and value.shape == (len(TIMES), 150, dim)
             np.testing.assert_array_equal(el["time"][()], [m["t"] for _, m in snaps])
-            np.testing.assert_array_equal(el["step"][()], np.arange(len(TIMES)))
+            np.testing.assert_array_equal(el["step"][()], collisions_at_snapshots(d))
             for series in ("value", "time", "step"):  # H5MD's [variable] time dimension
                 assert el[series].maxshape[0] is None, series
                 assert el[series].maxshape[1:] == el[series].shape[1:], series
@@ -75,6 +88,7 @@ def test_extended_xyz_read_by_ase(run):
         assert atoms.cell[0, 0] == meta["box"] and atoms.cell[1, 1] == meta["box"]
         assert list(atoms.pbc) == [True, True, dim == 3]
         assert atoms.info["Time"] == meta["t"]
+    assert [atoms.info["Collisions"] for atoms in frames] == list(collisions_at_snapshots(d))
 
 
 def test_same_seed_same_h5md_bytes(molchaos_bin, tmp_path):

@@ -41,6 +41,7 @@ struct Sample {
 struct Snapshot {
   double t = 0;
   double box = 0;
+  std::uint64_t collisions = 0;    // since t = 0 (an event-driven run's step counter)
   std::vector<double> positions;   // d*N, particle-major, in [0, box)
   std::vector<double> velocities;  // d*N, particle-major
 };

@@ -75,6 +75,7 @@ Snapshot snapshot_of(const Engine& engine) {
   Snapshot snap;
   snap.t = engine.time();
   snap.box = box;
+  snap.collisions = engine.collisions();
   snap.positions.resize(static_cast<std::size_t>(n_particles) * D);
   snap.velocities.resize(static_cast<std::size_t>(n_particles) * D);
   for (std::int32_t i = 0; i < n_particles; ++i) {
