@@ -4,8 +4,8 @@
 // bench_engine (engine_cases.hpp): the paper's case whole, the 3D cases over 5e5 of their 2e6
 // collisions. The paper's case also with the observers of a real run: paper_series samples the
 // temperature series on run()'s time grid (t_end = 1e6), paper_contacts adds contact statistics.
-// disks1e5 and disks1e6: the first 2e5 collisions of bm_disks at n = 0.05 with N = 1e5 and 1e6,
-// whose data outgrow the caches.
+// disks1e3 .. disks1e6: the first 2e5 collisions of bm_disks at n = 0.05 with N = 1e3 .. 1e6, whose
+// data grow from well inside a core's L2 cache (N = 1e3: 0.2 MB) to far beyond its last level.
 // Without valgrind the toggles do nothing and the program just runs the cases.
 #include <cstdint>
 #include <cstdio>
@@ -67,13 +67,17 @@ int main(int argc, char** argv) {
       run<2>(p, 200000, true);
     else
       run<2, molchaos::sim::ContactStatistics>(p, 200000, true);
-  } else if (which == "disks1e5" || which == "disks1e6") {  // bm_disks at n = 0.05
-    run<2>(molchaos::bench::disks_case(which == "disks1e5" ? 100000 : 1000000, 0.05), 200000);
+  } else if (which.size() == 8 && which.starts_with("disks1e") && which[7] >= '3' &&
+             which[7] <= '6') {  // bm_disks at n = 0.05
+    std::int32_t n = 1;
+    for (char k = '0'; k < which[7]; ++k) n *= 10;
+    run<2>(molchaos::bench::disks_case(n, 0.05), 200000);
   } else if (which == "spheres10" || which == "spheres40") {  // bm_spheres
     run<3>(molchaos::bench::spheres_case(which == "spheres10" ? 0.1 : 0.4), 500000);
   } else {
     std::fprintf(stderr,
-                 "usage: engine_counts paper|paper_series|paper_contacts|disks1e5|disks1e6|spheres10|"
+                 "usage: engine_counts paper|paper_series|paper_contacts|disks1e3|disks1e4|disks1e5|"
+                 "disks1e6|spheres10|"
         "spheres40\n");
     return 2;
   }

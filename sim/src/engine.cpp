@@ -47,10 +47,12 @@ constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
 // slots per particle (32 instead of 64 bytes).
 template <int D>
 constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
-// Engine data beyond a core's L2 cache (2 MB here). Software prefetches (of the next event's and
-// of the candidates' records) only pay then; below, they are extra instructions (8 % of them for
-// the paper's case, N = 5000, 1 MB). The particles are then also numbered along a Hilbert curve
-// at every rebuild, and disks get wider cells (k_cell_occupancy_beyond_cache).
+// Engine data above 2 MB: beyond a core's L2 cache (0.5 to 2 MB on current processors), where
+// the misses go to the shared last level or to memory. Software prefetches (of the next event's
+// and of the candidates' records) only pay then; below, they are extra instructions (8 % of them
+// for the paper's case, N = 5000, 1 MB, which ran no faster with them). The particles are then
+// also numbered along a Hilbert curve at every rebuild, and disks get wider cells
+// (k_cell_occupancy_beyond_cache).
 constexpr std::size_t k_cache_bytes = std::size_t{2} << 20;
 // Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
 // gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
