@@ -7,6 +7,7 @@
 #include <map>
 #include <ostream>
 #include <set>
+#include <variant>
 
 #include "cli_support.hpp"
 #include "molchaos/sim/parameter_table.hpp"
@@ -141,6 +142,16 @@ CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
   return cmd->get_option_no_throw("--" + dashed);
 }
 
+// True for the options of the parameter table's list rows (snapshot_times), whose empty list is
+// their default, "none".
+bool takes_empty_list(const CLI::Option* op) {
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    if (std::holds_alternative<std::vector<double> sim::Parameters::*>(info.field) &&
+        op->check_name(std::string(info.flag)))
+      return true;
+  return false;
+}
+
 std::string allowed_keys(CLI::App* cmd) {
   std::string keys;
   for (const CLI::Option* op : cmd->get_options()) {
@@ -189,7 +200,17 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
-    if (op->count() > 0 || values.empty()) continue;  // given on the command line, or empty
+    if (op->count() > 0) continue;  // given on the command line
+    if (values.empty()) {
+      // An empty list leaves the option at its default: right for a list whose default is no
+      // values (snapshot_times, as --write-config and the CSV header write "none"); for any
+      // other option it would drop the key without a word.
+      if (takes_empty_list(op)) continue;
+      throw UsageError("--config",
+                       path + ": key '" + key + "': " + op->get_name() +
+                           ": an empty value or list; give " +
+                           (op->get_items_expected_max() > 1 ? "at least one value" : "one value"));
+    }
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false
         if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))

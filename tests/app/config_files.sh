@@ -71,5 +71,15 @@ printf 'b = 2\n' >b.toml
 refused "--b: value 2 is outside the allowed range \[-2, 0.671216\)" theory --config b.toml
 refused "unknown key 'density' for reproduce" reproduce --config sweep.toml
 refused "--config.*missing.toml" simulate --config missing.toml
+# An empty list keeps an option's default: refused where that would drop the key unseen (a
+# single value, a sweep's list), accepted for snapshot_times, whose default is the empty list.
+printf 'density = []\n' >empty.toml
+refused "--config: empty.toml: key 'density': --density: an empty value or list; give one value" \
+  simulate --config empty.toml
+refused "key 'density': --density: an empty value or list; give at least one value" \
+  sweep --config empty.toml
+printf 'snapshot_times = []\n' >no_snapshots.toml
+"$bin" simulate --config no_snapshots.toml --particles 100 --t-end 1 --relax 1 --out none.csv \
+  --quiet 2>/dev/null || fail "snapshot_times = [] refused"
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range"
