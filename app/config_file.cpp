@@ -167,6 +167,12 @@ std::string allowed_keys(CLI::App* cmd) {
 ConfigItems read_config_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError("--config", "cannot read '" + path + "'");
+  // A UTF-8 byte order mark (as some Windows editors save) is no part of the first key.
+  char bom[3] = {};
+  if (!in.read(bom, 3) || bom[0] != '\xEF' || bom[1] != '\xBB' || bom[2] != '\xBF') {
+    in.clear();
+    in.seekg(0);
+  }
   const bool csv = ends_with(path, ".csv");
   if (csv && in.peek() != '#')
     throw UsageError("--config", path + ": no '# key = value' header (not a molchaos result file)");

@@ -19,7 +19,13 @@ cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differ
 sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends
 "$bin" simulate --config crlf.csv --out crlf_again.csv --quiet 2>/dev/null || fail "run from crlf.csv"
 cmp run.csv crlf_again.csv || fail "the run repeated from its CSV with CRLF line ends differs"
-echo "ok: a run repeated from its CSV (LF or CRLF) and from its TOML, byte for byte"
+{ printf '\xef\xbb\xbf'; cat run.csv; } >bom.csv  # saved with a UTF-8 byte order mark
+"$bin" simulate --config bom.csv --out bom_again.csv --quiet 2>/dev/null || fail "run from bom.csv"
+cmp run.csv bom_again.csv || fail "the run repeated from its CSV with a byte order mark differs"
+{ printf '\xef\xbb\xbf'; cat run.toml; } >bom.toml
+"$bin" simulate --config bom.toml --out bom_toml.csv --quiet 2>/dev/null || fail "run from bom.toml"
+cmp run.csv bom_toml.csv || fail "the run repeated from its TOML with a byte order mark differs"
+echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark) and from its TOML, byte for byte"
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
 grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
