@@ -26,6 +26,16 @@ cmp run.csv bom_again.csv || fail "the run repeated from its CSV with a byte ord
 "$bin" simulate --config bom.toml --out bom_toml.csv --quiet 2>/dev/null || fail "run from bom.toml"
 cmp run.csv bom_toml.csv || fail "the run repeated from its TOML with a byte order mark differs"
 echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark) and from its TOML, byte for byte"
+if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
+  # An H5MD trajectory carries the run's parameters (/parameters): the run repeats from it too.
+  "$bin" simulate --config run.csv --out traj.csv --trajectory traj.h5 --xyz traj.xyz --quiet \
+    2>/dev/null || fail "run with a trajectory"
+  "$bin" simulate --config traj.h5 --out traj_again.csv --trajectory traj_again.h5 \
+    --xyz traj_again.xyz --quiet 2>/dev/null || fail "run from traj.h5"
+  cmp run.csv traj_again.csv && cmp traj.h5 traj_again.h5 && cmp traj.xyz traj_again.xyz ||
+    fail "the run repeated from its H5MD trajectory differs"
+  echo "ok: a run repeated from its H5MD trajectory, byte for byte"
+fi
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
 grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
