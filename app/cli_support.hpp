@@ -138,6 +138,17 @@ inline CLI::Validator unsigned_integer() {
       "integer in " + range);
 }
 
+/// A validator for a file or folder name given on the command line or in a --config file: not
+/// empty. Where the default is an empty name ("no such output"), an empty value typed by hand
+/// (an unset shell variable) would otherwise drop the output without a word.
+inline CLI::Validator path_name() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        return text.empty() ? "empty name; give a path, or leave the option out" : "";
+      },
+      "PATH");
+}
+
 /// Throws UsageError(flag, ...) unless `directory` is, or can be created as, a writable
 /// directory: checked before any work starts, so a run never ends in "cannot write".
 inline void require_writable_directory(const std::string& flag, const std::string& directory) {

@@ -291,7 +291,7 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--out", o->out, "output folder")->capture_default_str();
+  cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
   cmd->callback([o] { run_bench(*o); });
 }
 

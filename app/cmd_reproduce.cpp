@@ -132,8 +132,8 @@ void add_reproduce_command(CLI::App& app) {
   auto o = std::make_shared<ReproduceCliOptions>();
   CLI::App* cmd =
       app.add_subcommand("reproduce", "Regenerate the paper's figures, REPORT.md and tables");
-  cmd->add_option("--out", o->out, "output folder")->capture_default_str();
-  cmd->add_option("--cache", o->cache, "run cache (default <out>/cache)");
+  cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
+  cmd->add_option("--cache", o->cache, "run cache (default <out>/cache)")->check(path_name());
   cmd->add_flag("--quick", o->quick, "one-minute first look (N = 1000, 3 restitutions, 3 seeds)");
   cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
       ->check(integer_in(1, 10000));

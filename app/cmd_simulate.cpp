@@ -35,8 +35,8 @@ namespace {
 struct SimulateOptions {
   sim::Parameters parameters;
   std::string out = "run.csv";
-  std::string trajectory;  // H5MD file of the snapshots (empty: none)
-  std::string xyz;         // extended XYZ file of the snapshots (empty: none)
+  std::string trajectory;         // H5MD file of the snapshots (empty: none)
+  std::string xyz;                // extended XYZ file of the snapshots (empty: none)
   std::string pair_correlations;  // g(r), G_par(r), G_perp(r) of the snapshots (empty: none)
   bool quiet = false;
   std::string write_config;  // TOML file of the parameters (empty: none)
@@ -154,8 +154,9 @@ void run_simulate(const SimulateOptions& options) {
     for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
                                      std::pair{"--restart", &checkpoints.restart}})
       if (!path->empty())
-        throw UsageError(flag, "not allowed with --method dsmc (its runs take seconds); allowed "
-                               "with --method edmd");
+        throw UsageError(flag,
+                         "not allowed with --method dsmc (its runs take seconds); allowed "
+                         "with --method edmd");
 
   if (!options.write_config.empty())
     require_writable_file("--write-config", options.write_config, false);
@@ -216,21 +217,27 @@ void add_simulate_command(CLI::App& app) {
       "Event-driven MD (or DSMC, --method dsmc) of inelastic hard disks/spheres; writes the T(t) "
       "time series");
   add_parameter_options(cmd, p);  // every row of the parameter table
-  cmd->add_option("--out", options->out, "Output CSV file")->capture_default_str();
+  cmd->add_option("--out", options->out, "Output CSV file")
+      ->check(path_name())
+      ->capture_default_str();
 #ifdef MOLCHAOS_HAVE_IO
   cmd->add_option("--trajectory", options->trajectory,
-                  "H5MD file (.h5) of the configurations at --snapshot-times");
+                  "H5MD file (.h5) of the configurations at --snapshot-times")
+      ->check(path_name());
   cmd->add_option("--xyz", options->xyz,
-                  "Extended XYZ file of the configurations at --snapshot-times, one frame each");
+                  "Extended XYZ file of the configurations at --snapshot-times, one frame each")
+      ->check(path_name());
 #endif
   cmd->add_option("--pair-correlations", options->pair_correlations,
                   "CSV file of g(r), G_par(r) and G_perp(r) at each of --snapshot-times, all, "
-                  "approaching and receding pairs apart");
+                  "approaching and receding pairs apart")
+      ->check(path_name());
   cmd->add_flag("--quiet", options->quiet, "No progress display");
   sim::CheckpointOptions& checkpoints = options->checkpoints;
   cmd->add_option("--checkpoint", checkpoints.path,
                   "Checkpoint file, written atomically at the intervals below and on SIGTERM or "
-                  "SIGINT (then the run ends with exit status 3)");
+                  "SIGINT (then the run ends with exit status 3)")
+      ->check(path_name());
   cmd->add_option("--checkpoint-interval", checkpoints.interval,
                   "Simulated time between checkpoints (taken at the first sample time after it; "
                   "0 = none) [sigma sqrt(m/T0)]")
@@ -240,9 +247,11 @@ void add_simulate_command(CLI::App& app) {
       ->check(real_in(0, true, std::numeric_limits<double>::infinity(), false));
   cmd->add_option("--restart", checkpoints.restart,
                   "Continue the run saved in this checkpoint (same parameters; t_end may change): "
-                  "the output is byte for byte the uninterrupted run's");
+                  "the output is byte for byte the uninterrupted run's")
+      ->check(path_name());
   cmd->add_option("--write-config", options->write_config,
-                  "Also write the run's parameters as a TOML file that --config reads back");
+                  "Also write the run's parameters as a TOML file that --config reads back")
+      ->check(path_name());
   const CLI::Option* relax =
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
   set_callback_with_config(cmd, [options, relax] {

@@ -149,7 +149,7 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--out", o->out, "summary CSV");
+  cmd->add_option("--out", o->out, "summary CSV")->check(path_name());
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
   set_callback_with_config(cmd, [o, relax] {
     o->relax_given = relax->count() > 0;

@@ -7,9 +7,13 @@
 #include <map>
 #include <ostream>
 #include <set>
+#include <variant>
 
 #include "cli_support.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#ifdef MOLCHAOS_HAVE_IO
+#include "molchaos/io/h5md_parameters.hpp"
+#endif
 
 namespace molchaos::app {
 namespace {
@@ -27,6 +31,19 @@ std::string trim(const std::string& text) {
 bool ends_with(const std::string& text, const std::string& tail) {
   return text.size() >= tail.size() &&
          text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// A result file whose header is read: a CSV (by its name) or an H5MD trajectory (HDF5, by its
+// first bytes: the name may end in .h5, .hdf5 or .h5md).
+bool is_hdf5_file(const std::string& path) {
+  static constexpr char k_signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
+  std::ifstream in(path, std::ios::binary);
+  char head[8] = {};
+  return in.read(head, sizeof head) && std::equal(head, head + 8, k_signature);
+}
+
+bool is_result_file(const std::string& path) {
+  return ends_with(path, ".csv") || is_hdf5_file(path);
 }
 
 // One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.
@@ -141,6 +158,16 @@ CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
   return cmd->get_option_no_throw("--" + dashed);
 }
 
+// True for the options of the parameter table's list rows (snapshot_times), whose empty list is
+// their default, "none".
+bool takes_empty_list(const CLI::Option* op) {
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    if (std::holds_alternative<std::vector<double> sim::Parameters::*>(info.field) &&
+        op->check_name(std::string(info.flag)))
+      return true;
+  return false;
+}
+
 std::string allowed_keys(CLI::App* cmd) {
   std::string keys;
   for (const CLI::Option* op : cmd->get_options()) {
@@ -156,6 +183,23 @@ std::string allowed_keys(CLI::App* cmd) {
 ConfigItems read_config_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError("--config", "cannot read '" + path + "'");
+  if (is_hdf5_file(path)) {
+#ifdef MOLCHAOS_HAVE_IO
+    try {
+      return io::read_h5md_parameters(path);
+    } catch (const std::runtime_error& e) {
+      throw UsageError("--config", e.what());
+    }
+#else
+    throw UsageError("--config", path + ": an HDF5 file, and this build reads none (no HDF5)");
+#endif
+  }
+  // A UTF-8 byte order mark (as some Windows editors save) is no part of the first key.
+  char bom[3] = {};
+  if (!in.read(bom, 3) || bom[0] != '\xEF' || bom[1] != '\xBB' || bom[2] != '\xBF') {
+    in.clear();
+    in.seekg(0);
+  }
   const bool csv = ends_with(path, ".csv");
   if (csv && in.peek() != '#')
     throw UsageError("--config", path + ": no '# key = value' header (not a molchaos result file)");
@@ -165,14 +209,15 @@ ConfigItems read_config_file(const std::string& path) {
 void add_config_option(CLI::App* cmd, std::string& path) {
   cmd->add_option("--config", path,
                   "Options from a TOML file (key = value, keys as the flags or the parameter "
-                  "names) or a result CSV's header (repeats that run); flags given win")
+                  "names), a result CSV's header or an H5MD trajectory's /parameters (repeats "
+                  "that run); flags given win")
       ->check(CLI::ExistingFile)
       ->configurable(false);
 }
 
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const bool csv = ends_with(path, ".csv");
+  const bool result_file = is_result_file(path);
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;
@@ -180,7 +225,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     CLI::Option* op = option_of(cmd, key);
     if (op == nullptr || !op->get_configurable()) {
       // A result file names its outputs and the run's other inputs: skipped where not options.
-      if (csv && (k_result_keys.count(key) > 0 || sim::find_parameter(key) != nullptr)) continue;
+      if (result_file && (k_result_keys.count(key) > 0 || sim::find_parameter(key) != nullptr))
+        continue;
       throw UsageError("--config", path + ": unknown key '" + key + "' for " + cmd->get_name() +
                                        "; allowed: " + allowed_keys(cmd));
     }
@@ -189,7 +235,17 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
-    if (op->count() > 0 || values.empty()) continue;  // given on the command line, or empty
+    if (op->count() > 0) continue;  // given on the command line
+    if (values.empty()) {
+      // An empty list leaves the option at its default: right for a list whose default is no
+      // values (snapshot_times, as --write-config and the CSV header write "none"); for any
+      // other option it would drop the key without a word.
+      if (takes_empty_list(op)) continue;
+      throw UsageError("--config",
+                       path + ": key '" + key + "': " + op->get_name() +
+                           ": an empty value or list; give " +
+                           (op->get_items_expected_max() > 1 ? "at least one value" : "one value"));
+    }
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false
         if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))

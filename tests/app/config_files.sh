@@ -19,7 +19,23 @@ cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differ
 sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends
 "$bin" simulate --config crlf.csv --out crlf_again.csv --quiet 2>/dev/null || fail "run from crlf.csv"
 cmp run.csv crlf_again.csv || fail "the run repeated from its CSV with CRLF line ends differs"
-echo "ok: a run repeated from its CSV (LF or CRLF) and from its TOML, byte for byte"
+{ printf '\xef\xbb\xbf'; cat run.csv; } >bom.csv  # saved with a UTF-8 byte order mark
+"$bin" simulate --config bom.csv --out bom_again.csv --quiet 2>/dev/null || fail "run from bom.csv"
+cmp run.csv bom_again.csv || fail "the run repeated from its CSV with a byte order mark differs"
+{ printf '\xef\xbb\xbf'; cat run.toml; } >bom.toml
+"$bin" simulate --config bom.toml --out bom_toml.csv --quiet 2>/dev/null || fail "run from bom.toml"
+cmp run.csv bom_toml.csv || fail "the run repeated from its TOML with a byte order mark differs"
+echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark) and from its TOML, byte for byte"
+if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
+  # An H5MD trajectory carries the run's parameters (/parameters): the run repeats from it too.
+  "$bin" simulate --config run.csv --out traj.csv --trajectory traj.h5 --xyz traj.xyz --quiet \
+    2>/dev/null || fail "run with a trajectory"
+  "$bin" simulate --config traj.h5 --out traj_again.csv --trajectory traj_again.h5 \
+    --xyz traj_again.xyz --quiet 2>/dev/null || fail "run from traj.h5"
+  cmp run.csv traj_again.csv && cmp traj.h5 traj_again.h5 && cmp traj.xyz traj_again.xyz ||
+    fail "the run repeated from its H5MD trajectory differs"
+  echo "ok: a run repeated from its H5MD trajectory, byte for byte"
+fi
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
 grep -qx "# seed = 12" other.csv && grep -qx "# t_end = 20" other.csv &&
@@ -71,5 +87,15 @@ printf 'b = 2\n' >b.toml
 refused "--b: value 2 is outside the allowed range \[-2, 0.671216\)" theory --config b.toml
 refused "unknown key 'density' for reproduce" reproduce --config sweep.toml
 refused "--config.*missing.toml" simulate --config missing.toml
+# An empty list keeps an option's default: refused where that would drop the key unseen (a
+# single value, a sweep's list), accepted for snapshot_times, whose default is the empty list.
+printf 'density = []\n' >empty.toml
+refused "--config: empty.toml: key 'density': --density: an empty value or list; give one value" \
+  simulate --config empty.toml
+refused "key 'density': --density: an empty value or list; give at least one value" \
+  sweep --config empty.toml
+printf 'snapshot_times = []\n' >no_snapshots.toml
+"$bin" simulate --config no_snapshots.toml --particles 100 --t-end 1 --relax 1 --out none.csv \
+  --quiet 2>/dev/null || fail "snapshot_times = [] refused"
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range"
