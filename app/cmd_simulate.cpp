@@ -82,6 +82,8 @@ std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
     return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
   } catch (const sim::CheckpointError& e) {
     throw UsageError("--restart", e.what());
+  } catch (const std::invalid_argument& e) {  // a request the engine refuses (a relaxation too long)
+    throw_as_usage_error("simulate", e.what());
   }
 }
 

@@ -130,11 +130,29 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
 
 template <int D, class Observer>
 void Engine<D, Observer>::relax(double collisions_per_particle) {
+  const auto target = static_cast<std::uint64_t>(
+      std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
+  // A relaxation counts collisions, not time: in a gas so dilute that a particle crosses many
+  // cells between collisions, its events grow as the crossings do (about 1/sqrt(n) per
+  // collision), and 20 collisions per particle at n = 1e-20 would take days without a word.
+  const double expected_events = static_cast<double>(target) * events_per_collision_;
+  if (expected_events > k_max_relaxation_events) {
+    const double most = k_max_relaxation_events / events_per_collision_ * 2.0 / n_;
+    auto estimate = [](double x) {  // two digits: an estimate
+      char text[32];
+      std::snprintf(text, sizeof text, "%.2g", x);
+      return std::string(text);
+    };
+    throw std::invalid_argument(
+        "relax_collisions_per_particle: " + message_number(collisions_per_particle) +
+        " collisions per particle would take about " + estimate(expected_events) +
+        " events at this density (" + estimate(events_per_collision_) +
+        " per collision, most of them cell crossings); allowed range [0, " +
+        message_number(most) + "] here: relax less (0: none) or simulate a denser gas");
+  }
   const std::uint64_t limit = collision_limit_;
   const double t_min = min_temperature_;
   min_temperature_ = 0;
-  const auto target = static_cast<std::uint64_t>(
-      std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
   if (target > 0) {
     collision_limit_ = collisions_ + target;
     for (;;) {

@@ -49,7 +49,9 @@ class Engine {
   explicit Engine(const Parameters& p);
 
   /// A run with CollisionModel::elastic() for the given collisions per particle, then T rescaled
-  /// to 1, time and counters reset to 0.
+  /// to 1, time and counters reset to 0. Throws std::invalid_argument (naming
+  /// relax_collisions_per_particle and its range here) when that would take more than 1e11
+  /// events: in extremely dilute gases, where cell crossings outnumber collisions by far.
   void relax(double collisions_per_particle);
 
   /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
