@@ -41,28 +41,58 @@ std::string repr_text(py::handle value) { return py::repr(value).cast<std::strin
                        py::type::handle_of(value).attr("__name__").cast<std::string>() + ")");
 }
 
+// numpy's scalars and arrays: the kind of their dtype ('b' bool, 'i' and 'u' integers, 'f' reals,
+// 'c' complex, ...) and their number of dimensions; kind 0 for any other object.
+struct NumpyKind {
+  char kind = 0;
+  py::ssize_t ndim = 0;
+};
+
+NumpyKind numpy_kind(py::handle value) {
+  PyObject* const o = value.ptr();
+  if (PyBool_Check(o) || PyLong_CheckExact(o) || PyFloat_CheckExact(o) || PyUnicode_Check(o))
+    return {};
+  if (py::isinstance<py::array>(value)) {
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    return {array.dtype().kind(), array.ndim()};
+  }
+  if (py::isinstance(value, py::module_::import("numpy").attr("generic")))
+    return {value.attr("dtype").attr("kind").cast<std::string>().at(0), 0};
+  return {};
+}
+
 // A keyword's value as the parameter's C++ type, or a TypeError naming the parameter and the type
 // it takes. A bool is refused where a number is expected: Python's True is the integer 1, and
-// restitution=True would otherwise run silently as eps = 1. An int is taken where a real is
-// expected (restitution=1), as is any real with __float__ (numpy.float32); a float is never taken
-// where an integer is (particles=2.5).
+// restitution=True would otherwise run silently as eps = 1 (numpy's bool likewise). An int is
+// taken where a real is expected (restitution=1), as is any real with __float__ (numpy.float32,
+// Fraction); a float is never taken where an integer is (particles=2.5), nor a complex number
+// (numpy's would drop its imaginary part) or an array (np.array([0.9])) where one number is.
 template <class T>
 T keyword_as(const std::string& name, py::handle value) {
   PyObject* const o = value.ptr();
+  const NumpyKind numpy = numpy_kind(value);
   if constexpr (std::is_same_v<T, bool>) {
-    if (!PyBool_Check(o)) wrong_type(name, "True or False", value);
+    if (!PyBool_Check(o) && !(numpy.kind == 'b' && numpy.ndim == 0))
+      wrong_type(name, "True or False", value);
   } else if constexpr (std::is_integral_v<T>) {
-    if (PyBool_Check(o) || !PyIndex_Check(o)) wrong_type(name, "an integer", value);
+    const bool numpy_integer = (numpy.kind == 'i' || numpy.kind == 'u') && numpy.ndim == 0;
+    if (PyBool_Check(o) || !PyIndex_Check(o) || (numpy.kind != 0 && !numpy_integer))
+      wrong_type(name, "an integer", value);
   } else if constexpr (std::is_floating_point_v<T>) {
-    if (PyBool_Check(o) ||
+    const bool numpy_real =
+        (numpy.kind == 'i' || numpy.kind == 'u' || numpy.kind == 'f') && numpy.ndim == 0;
+    if (PyBool_Check(o) || (numpy.kind != 0 && !numpy_real) ||
         !(PyFloat_Check(o) || PyIndex_Check(o) || py::hasattr(value, "__float__")))
       wrong_type(name, "a real number", value);
   } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-    if (PyUnicode_Check(o) || !PySequence_Check(o))
+    if (PyUnicode_Check(o) || PyBytes_Check(o) || PyByteArray_Check(o) || !PySequence_Check(o) ||
+        (numpy.kind != 0 && numpy.ndim != 1))
       wrong_type(name, "a list of real numbers", value);
+    // A tuple owns its items: numpy hands out each element as a new object, which a handle
+    // into the sequence would not keep alive.
+    const py::tuple items(py::reinterpret_borrow<py::object>(value));
     T out;
-    for (py::handle item : py::reinterpret_borrow<py::sequence>(value))
-      out.push_back(keyword_as<double>(name, item));
+    for (py::handle item : items) out.push_back(keyword_as<double>(name, item));
     return out;
   } else {
     if (!PyUnicode_Check(o)) wrong_type(name, "a string", value);
