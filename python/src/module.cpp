@@ -4,9 +4,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -262,16 +265,96 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
   return a;
 }
 
+// Ctrl-C during a run. Python's own SIGINT handler only notes the signal, and the interpreter runs
+// the Python handler (KeyboardInterrupt) when it next executes Python code: after the run, which
+// may take hours. While a run started from the main thread goes on, a handler in front of Python's
+// also asks the run to stop (CheckpointOptions::interrupt): it stops at its next sample time or
+// progress pause (at most 2^20 events) once its relaxation is done, writes its checkpoint if it
+// has a path, and KeyboardInterrupt is raised. Signals with other Python handlers (a SIGINT or
+// SIGTERM handler of the caller's, an alarm) are run in the progress pauses, and stop the run
+// when they raise.
+std::atomic<bool> g_interrupt_requested{false};
+struct sigaction g_python_sigint {};
+
+void on_sigint(int signal) {
+  g_interrupt_requested.store(true);
+  g_python_sigint.sa_handler(signal);  // Python's: notes the signal for the interpreter
+}
+
+bool in_main_thread() {
+  const py::module_ threading = py::module_::import("threading");
+  const py::object main_ident = threading.attr("main_thread")().attr("ident");
+  return main_ident.equal(threading.attr("get_ident")());
+}
+
+// Puts on_sigint in front of Python's SIGINT handler for its lifetime: in the main thread, and only
+// where SIGINT raises KeyboardInterrupt (not where it is ignored, left to the system's default or
+// given to a handler of the caller's).
+class SigintWatch {
+ public:
+  SigintWatch() {
+    g_interrupt_requested.store(false);
+    if (!in_main_thread()) return;
+    const py::module_ signal_module = py::module_::import("signal");
+    if (!signal_module.attr("getsignal")(SIGINT).is(signal_module.attr("default_int_handler")))
+      return;
+    struct sigaction current {};
+    if (sigaction(SIGINT, nullptr, &current) != 0) return;
+    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler == SIG_DFL ||
+        current.sa_handler == SIG_IGN)
+      return;
+    g_python_sigint = current;
+    struct sigaction ours = current;
+    ours.sa_handler = on_sigint;
+    installed_ = sigaction(SIGINT, &ours, nullptr) == 0;
+  }
+  ~SigintWatch() {
+    if (installed_) sigaction(SIGINT, &g_python_sigint, nullptr);
+  }
+  SigintWatch(const SigintWatch&) = delete;
+  SigintWatch& operator=(const SigintWatch&) = delete;
+
+ private:
+  bool installed_ = false;
+};
+
+struct RunInterrupted {};  // thrown out of a DSMC run, which has no interrupt of its own
+
 py::dict simulate(const py::kwargs& kwargs) {
   sim::CheckpointOptions checkpoints;
   const sim::Parameters p = parameters_from(kwargs, checkpoints);
-  sim::RunResult r;
-  try {
-    py::gil_scoped_release release;                      // the engine touches no Python object
-    r = *sim::run_with_checkpoints(p, {}, checkpoints);  // no interrupt: always a result
-  } catch (const sim::CheckpointError& e) {
-    throw py::value_error(e.what());
+  const bool main_thread = in_main_thread();
+  std::optional<py::error_already_set> signal_error;  // raised by a Python signal handler
+  std::optional<sim::RunResult> result;
+  {
+    const SigintWatch watch;
+    checkpoints.interrupt = &g_interrupt_requested;
+    const sim::ProgressReporter look_at_signals = [&](const sim::Progress&) {
+      if (main_thread && !g_interrupt_requested.load()) {
+        const py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) {
+          signal_error.emplace();  // takes the exception the handler raised
+          g_interrupt_requested.store(true);
+        }
+      }
+      if (p.method == sim::Method::dsmc && g_interrupt_requested.load()) throw RunInterrupted{};
+    };
+    try {
+      py::gil_scoped_release release;  // the engine touches no Python object
+      result = sim::run_with_checkpoints(p, look_at_signals, checkpoints);
+    } catch (const sim::CheckpointError& e) {
+      throw py::value_error(e.what());
+    } catch (const RunInterrupted&) {
+      result.reset();
+    }
+  }  // Python's own SIGINT handler is back
+  if (!result) {
+    if (signal_error) throw std::move(*signal_error);
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    PyErr_SetNone(PyExc_KeyboardInterrupt);  // a handler that raised nothing: still no result
+    throw py::error_already_set();
   }
+  const sim::RunResult& r = *result;
   const auto& s = r.samples;
   py::dict d;
   d["t"] = column<double>(s, [](const sim::Sample& x) { return x.t; });
