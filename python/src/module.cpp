@@ -112,7 +112,10 @@ T keyword_as(const std::string& name, py::handle value) {
 std::string path_keyword(const std::string& name, py::handle value) {
   if (!PyUnicode_Check(value.ptr()) && !py::hasattr(value, "__fspath__"))
     wrong_type(name, "a file name (str or os.PathLike)", value);
-  return keyword_as<std::string>(name, py::module_::import("os").attr("fspath")(value));
+  std::string path = keyword_as<std::string>(name, py::module_::import("os").attr("fspath")(value));
+  // An empty name would read as "none given": restart="" would start a new run without a word.
+  if (path.empty()) throw py::value_error(name + ": the file name is empty");
+  return path;
 }
 
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.

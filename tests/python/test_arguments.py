@@ -70,3 +70,10 @@ def test_numpy_numbers_of_the_right_kind_are_taken():
     # numpy's bool (what a comparison of numpy numbers gives) is a bool.
     run = molchaos.simulate(**SMALL, contact_statistics=np.float64(1.0) > 0)
     assert run["parameters"]["contact_statistics"] is True
+
+
+@pytest.mark.parametrize("name", ["checkpoint", "restart"])
+def test_an_empty_checkpoint_name_is_refused(name):
+    # Was: read as no file at all, so restart="" ran a new run from t = 0 without a word.
+    with pytest.raises(ValueError, match=f"{name}: the file name is empty"):
+        molchaos.simulate(**SMALL, **{name: ""})
