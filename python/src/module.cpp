@@ -120,13 +120,24 @@ std::string path_keyword(const std::string& name, py::handle value) {
 
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
 py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
-                           py::handle b_arg, py::handle tolerance_arg) {
+                           py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg) {
   const int dim = keyword_as<int>("dim", dim_arg);
   const double restitution = keyword_as<double>("restitution", restitution_arg);
   const double density = keyword_as<double>("density", density_arg);
   const double b = keyword_as<double>("b", b_arg);
-  const double tolerance = keyword_as<double>("tolerance", tolerance_arg);
+  const std::string quadrature = keyword_as<std::string>("quadrature", quadrature_arg);
   if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
+  if (quadrature != "gauss" && quadrature != "adaptive")
+    throw py::value_error("quadrature: must be one of {gauss, adaptive}, got " +
+                          repr_text(quadrature_arg));
+  // The Gauss rules are exact for these integrands and take no tolerance: one given with them
+  // would be ignored without a word.
+  const double tolerance =
+      tolerance_arg.is_none() ? 1e-10 : keyword_as<double>("tolerance", tolerance_arg);
+  if (quadrature == "gauss" && !tolerance_arg.is_none())
+    throw py::value_error(
+        "tolerance: applies to quadrature='adaptive' only (the Gauss rules are "
+        "exact for these integrands)");
   if (!(tolerance >= theory::k_min_relative_tolerance &&
         tolerance <= theory::k_max_relative_tolerance))
     throw py::value_error("tolerance: value " + repr_text(py::float_(tolerance)) +
@@ -140,6 +151,8 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   inputs.density = density;
   inputs.restitution = restitution;
   inputs.correlation_b = b;
+  inputs.quadrature.method = quadrature == "adaptive" ? theory::QuadratureMethod::adaptive
+                                                      : theory::QuadratureMethod::gauss;
   inputs.quadrature.relative_tolerance = tolerance;
   theory::CoolingPrediction p;
   try {
@@ -153,6 +166,7 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   d["restitution"] = restitution;
   d["density"] = density;
   d["b"] = b;
+  d["quadrature"] = quadrature;
   d["packing_fraction"] = p.packing_fraction;
   d["g2"] = estimate({p.g2, 0.0});  // closed forms: exact
   d["a2"] = estimate({p.a2, 0.0});
@@ -386,6 +400,51 @@ py::dict simulate(const py::kwargs& kwargs) {
   return d;
 }
 
+// help(molchaos.simulate): every keyword from the parameter table, with its default, range, unit
+// and meaning, so that the text cannot fall behind the parameters the function takes.
+std::string simulate_doc() {
+  std::string doc =
+      "One cooling run: relaxation at restitution 1, then the cooling gas to t_end, sampled on a\n"
+      "log-spaced grid (the CLI's `molchaos simulate`; the same parameters give the same numbers,\n"
+      "bit for bit). Keywords only; an unknown keyword, a value of the wrong type (TypeError) or\n"
+      "out of its range (ValueError) is refused naming the parameter.\n\n"
+      "Run parameters (default; allowed range; unit):\n";
+  const sim::Parameters defaults;
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    const std::string name(info.name);
+    std::string text = sim::format_value(defaults, info);
+    if (name == "snapshot_times") text = "[]";
+    if (text == "false") text = "False";
+    if (!info.choices.empty()) text = "'" + text + "'";
+    doc += "  " + name + (name == "dimension" ? " (or dim)" : "") + " = " + text + "; ";
+    if (text == "False")
+      doc += "True or False";
+    else
+      doc += info.choices.empty() ? sim::range_text(info) : sim::choice_list(info);
+    if (!info.unit.empty()) doc += "; " + std::string(info.unit);
+    doc += "\n      " + std::string(info.doc) + "\n";
+  }
+  doc +=
+      "  (relax_collisions_per_particle defaults to 0 for method = 'dsmc', which relaxes nothing)\n"
+      "\nCheckpoints (event-driven method only):\n"
+      "  checkpoint = FILE (str or os.PathLike), checkpoint_interval = DT (simulated time between\n"
+      "      checkpoints, >= 0): writes the run's whole state;\n"
+      "  restart = FILE: continues a checkpoint; the result equals the uninterrupted run's.\n"
+      "\nCtrl-C stops the run at its next sample time or progress pause (at most 2^20 events; not\n"
+      "during the relaxation) and raises KeyboardInterrupt; with checkpoint = FILE the run's "
+      "state\n"
+      "at that point is written there first. The engine runs without the GIL.\n"
+      "\nReturns a dict:\n"
+      "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
+      "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"
+      "      density fluctuations); collisions, events: uint64 arrays, counts up to each sample;\n"
+      "  snapshots: list of dicts with t, box and positions, velocities (float64, N x d), one per\n"
+      "      snapshot time;\n"
+      "  parameters: dict of every run parameter above (choices as their names);\n"
+      "  version, stop_reason (str); total_collisions, total_events (int); wall_seconds (float).";
+  return doc;
+}
+
 }  // namespace
 }  // namespace molchaos::python
 
@@ -393,15 +452,22 @@ PYBIND11_MODULE(_molchaos, m) {
   using namespace molchaos::python;
   m.doc() = "molchaos: kinetic theory and event-driven MD of granular gases (sigma = m = k_B = 1)";
   m.attr("__version__") = std::string(molchaos::k_version);
-  m.def("theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
-        py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
-        py::arg("b") = py::float_(0.0), py::arg("tolerance") = py::float_(1e-10),
-        "Kinetic-theory prediction for one state point (dim: int, 2 or 3; restitution, density, "
-        "b, tolerance: real numbers): g2, a2, mu2, tau0, A as {value, error} dicts.");
-  m.def("simulate", &simulate,
-        "One cooling run. Keyword arguments are the fields of sim::Parameters (dim, particles, "
-        "density, restitution, randomize, seed, t_end, ...), validated like the CLI's flags; "
-        "returns a dict with numpy arrays t, T, a2, collisions and the run's metadata. "
-        "checkpoint=FILE with checkpoint_interval=DT writes checkpoints; restart=FILE continues "
-        "one (the result equals the uninterrupted run's).");
+  m.def(
+      "theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
+      py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
+      py::arg("b") = py::float_(0.0), py::arg("quadrature") = py::str("gauss"),
+      py::arg("tolerance") = py::none(),
+      "Kinetic-theory prediction for one state point (the CLI's `molchaos theory`).\n\n"
+      "dim: 2 or 3; restitution: in (0, 1]; density: reduced density n, above 0 and below close\n"
+      "packing; b: the velocity correlation at contact of the paper's ansatz, in the range where\n"
+      "f2 and mu2 stay positive (the error names it); quadrature: 'gauss' (fixed rules, exact for\n"
+      "these integrands) or 'adaptive' (GSL's QAGIU, the independent check); tolerance: its\n"
+      "relative tolerance, in [1e-13, 1e-2], default 1e-10 (adaptive only).\n"
+      "Keywords only; a value of the wrong type raises TypeError, one out of range ValueError,\n"
+      "each naming the parameter.\n\n"
+      "Returns a dict: dim, restitution, density, b, quadrature (the inputs); packing_fraction,\n"
+      "omega0, enskog_collision_frequency (floats); g2, a2, mu2, mu2_ratio (mu2/mu2(0,0)),\n"
+      "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
+      "the quadrature's estimate (0 for the closed forms g2 and a2); version (str).");
+  m.def("simulate", &simulate, simulate_doc().c_str());
 }

@@ -3,6 +3,7 @@ arrays of every dtype and shape, complex and boolean numbers, bytes. Each is tak
 list it stands for, or refused with a TypeError naming the parameter; never silently read as
 something else, and never a crash."""
 
+import json
 import subprocess
 import sys
 
@@ -77,3 +78,40 @@ def test_an_empty_checkpoint_name_is_refused(name):
     # Was: read as no file at all, so restart="" ran a new run from t = 0 without a word.
     with pytest.raises(ValueError, match=f"{name}: the file name is empty"):
         molchaos.simulate(**SMALL, **{name: ""})
+
+
+def test_theory_quadrature_and_its_tolerance(molchaos_bin):
+    # Was: tolerance was taken and changed nothing (the Gauss rules take none), and the adaptive
+    # quadrature of the CLI could not be chosen.
+    out = subprocess.run([molchaos_bin, "theory", "--quadrature", "adaptive", "--tolerance", "1e-4",
+                          "--json"], check=True, capture_output=True, text=True).stdout
+    adaptive = molchaos.theory(quadrature="adaptive", tolerance=1e-4)
+    assert adaptive["mu2"]["value"] == json.loads(out)["mu2"]
+    assert adaptive["mu2"]["error"] == json.loads(out)["mu2_error"]
+    gauss = molchaos.theory()
+    assert gauss["quadrature"] == "gauss" and adaptive["quadrature"] == "adaptive"
+    # Different routes, each within its own error estimate of the other.
+    assert adaptive["mu2"]["value"] != gauss["mu2"]["value"]
+    assert abs(adaptive["mu2"]["value"] - gauss["mu2"]["value"]) <= \
+        adaptive["mu2"]["error"] + gauss["mu2"]["error"]
+    with pytest.raises(ValueError, match=r"tolerance: applies to quadrature='adaptive' only"):
+        molchaos.theory(tolerance=1e-4)
+    with pytest.raises(ValueError, match=r"quadrature: must be one of \{gauss, adaptive\}"):
+        molchaos.theory(quadrature="qagiu")
+
+
+def test_help_names_every_parameter_and_the_result_types():
+    doc = molchaos.simulate.__doc__
+    run = molchaos.simulate(**dict(SMALL, dim=3), snapshot_times=[5.0])
+    for name in run["parameters"]:
+        assert f"\n  {name}" in doc, name
+    assert "collisions, events: uint64 arrays" in doc
+    for key in ("collisions", "events"):
+        assert run[key].dtype == np.uint64 and run[key].shape == run["t"].shape
+    for key in ("t", "T", "a2", "velocity_mode", "density_mode"):
+        assert run[key].dtype == np.float64 and run[key].shape == run["t"].shape
+    snap = run["snapshots"][0]
+    assert snap["positions"].shape == snap["velocities"].shape == (200, 3)
+    assert snap["positions"].dtype == np.float64
+    assert isinstance(run["total_collisions"], int) and isinstance(run["wall_seconds"], float)
+    assert "quadrature" in molchaos.theory.__doc__
