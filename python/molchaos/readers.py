@@ -2,7 +2,14 @@
 header, the summary tables of `molchaos reproduce`, and H5MD trajectories. Each returns a pandas
 DataFrame (or numpy arrays) together with the metadata dict."""
 
+import os
+import re
+
 import pandas as pd
+
+# A `# key = value` header line: the key is one word (a parameter's name); a title or a note with
+# an equals sign in its prose ("(sigma = m = 1, T0 = 1)") is text, not a key.
+_KEY_LINE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*=(?:\s(.*))?$")
 
 
 def _header_value(text):
@@ -23,23 +30,38 @@ def _header_value(text):
     return text
 
 
+def _file_name(path):
+    """A file name given as str or os.PathLike; anything else (an int would be taken by open() as
+    a file descriptor of the process, and closed) is refused."""
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path: expected a file name (str or os.PathLike), got {path!r} "
+                        f"({type(path).__name__})")
+    return os.fspath(path)
+
+
 def _read_header(path):
-    """The `# key = value` lines at the top of a file, and how many comment lines there are."""
+    """The `# key = value` lines at the top of a file, and how many comment lines there are. Lines
+    of text without a key (the title, notes) are joined into metadata["description"]."""
     metadata = {}
+    text = []
     comment_lines = 0
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            comment_lines += 1
-            body = line[1:].strip()
-            if " = " in body:
-                key, value = body.split(" = ", 1)
-                metadata[key.strip()] = _header_value(value.strip())
-            elif "=" in body and body.endswith("="):
-                metadata[body[:-1].strip()] = ""
-            elif body:
-                metadata.setdefault("description", body)
+    try:
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                if not line.startswith("#"):
+                    break
+                comment_lines += 1
+                body = line[1:].strip()
+                match = _KEY_LINE.match(body)
+                if match:
+                    metadata[match.group(1)] = _header_value((match.group(2) or "").strip())
+                elif body:
+                    text.append(body)
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: not a text file (molchaos writes its CSV files as UTF-8 text)") \
+            from None
+    if text:
+        metadata["description"] = "\n".join(text)
     if "snapshot_times" in metadata and not isinstance(metadata["snapshot_times"], list):
         value = metadata["snapshot_times"]
         metadata["snapshot_times"] = [] if value == "" else [float(value)]
@@ -56,28 +78,54 @@ def _read_rows(path):
             f.seek(-1, 2)
             if f.read(1) != b"\n":
                 raise ValueError(f"{path}: ends in the middle of a line (a truncated file?)")
-    return pd.read_csv(path, comment="#", float_precision="round_trip")
+    try:
+        return pd.read_csv(path, comment="#", float_precision="round_trip")
+    except pd.errors.EmptyDataError:
+        raise ValueError(f"{path}: no column names and no rows (an empty or truncated file?)") \
+            from None
+
+
+def _require_columns(path, frame, expected, kind):
+    if list(frame.columns[: len(expected)]) != expected:
+        raise ValueError(f"{path}: not a {kind}: its columns are {', '.join(map(str, frame.columns))}"
+                         f", where a {kind} starts with {', '.join(expected)}")
+
+
+RUN_COLUMNS = ["t", "T", "a2", "collisions", "events", "velocity_mode", "density_mode"]
 
 
 def read_run_csv(path):
-    """A `molchaos simulate --out` file: (DataFrame with columns t, T, a2, collisions, ...,
-    metadata dict with the run's parameters, version, stop_reason)."""
+    """A `molchaos simulate --out` file: (DataFrame with columns t, T, a2, collisions, events,
+    velocity_mode, density_mode[, contact columns], metadata dict with the run's parameters,
+    version, stop_reason). Another kind of file (a snapshot, a summary table) is refused."""
+    path = _file_name(path)
     metadata, _ = _read_header(path)
     frame = _read_rows(path)
+    _require_columns(path, frame, RUN_COLUMNS, "run CSV")
     if "rows" in metadata and metadata["rows"] != len(frame):
         raise ValueError(f"{path}: header says {metadata['rows']} rows, file has {len(frame)}")
     return frame, metadata
 
 
 def read_snapshot_csv(path):
-    """A snapshot file written next to a run CSV (`--snapshot-times`): (DataFrame, metadata)."""
+    """A snapshot file written next to a run CSV (`--snapshot-times`): (DataFrame with columns x,
+    y[, z], vx, vy[, vz], one row per particle; metadata with the time t and the box side)."""
+    path = _file_name(path)
     metadata, _ = _read_header(path)
-    return _read_rows(path), metadata
+    frame = _read_rows(path)
+    dim = 3 if "z" in frame.columns else 2
+    axes = ["x", "y", "z"][:dim]
+    _require_columns(path, frame, axes + ["v" + a for a in axes], "snapshot CSV")
+    for key in ("t", "box"):
+        if key not in metadata:
+            raise ValueError(f"{path}: not a snapshot CSV: no '# {key} = ...' line in its header")
+    return frame, metadata
 
 
 def read_table(path):
     """A summary table of `molchaos reproduce` (e.g. fig4_A_of_eps.csv): (DataFrame, metadata
     from its `#` lines, possibly empty)."""
+    path = _file_name(path)
     metadata, _ = _read_header(path)
     return _read_rows(path), metadata
 
@@ -87,7 +135,19 @@ def read_trajectory(path):
     step (F), position and velocity (F x N x d), edges (d), and the run's parameters."""
     import h5py
 
-    with h5py.File(path, "r") as f:
+    path = _file_name(path)
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        if type(e) is not OSError:  # FileNotFoundError, IsADirectoryError, ...: they name it
+            raise
+        # Not HDF5, or cut short: h5py's message does not name the file.
+        raise OSError(f"{path}: cannot be read as HDF5 ({e})") from None
+    with f:
+        for group in ("particles/all/position", "particles/all/velocity", "particles/all/box",
+                      "parameters"):
+            if group not in f:
+                raise ValueError(f"{path}: not an H5MD trajectory of molchaos (no group {group})")
         particles = f["particles/all"]
         out = {
             "time": particles["position/time"][()],

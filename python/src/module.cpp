@@ -4,9 +4,12 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -41,28 +44,58 @@ std::string repr_text(py::handle value) { return py::repr(value).cast<std::strin
                        py::type::handle_of(value).attr("__name__").cast<std::string>() + ")");
 }
 
+// numpy's scalars and arrays: the kind of their dtype ('b' bool, 'i' and 'u' integers, 'f' reals,
+// 'c' complex, ...) and their number of dimensions; kind 0 for any other object.
+struct NumpyKind {
+  char kind = 0;
+  py::ssize_t ndim = 0;
+};
+
+NumpyKind numpy_kind(py::handle value) {
+  PyObject* const o = value.ptr();
+  if (PyBool_Check(o) || PyLong_CheckExact(o) || PyFloat_CheckExact(o) || PyUnicode_Check(o))
+    return {};
+  if (py::isinstance<py::array>(value)) {
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    return {array.dtype().kind(), array.ndim()};
+  }
+  if (py::isinstance(value, py::module_::import("numpy").attr("generic")))
+    return {value.attr("dtype").attr("kind").cast<std::string>().at(0), 0};
+  return {};
+}
+
 // A keyword's value as the parameter's C++ type, or a TypeError naming the parameter and the type
 // it takes. A bool is refused where a number is expected: Python's True is the integer 1, and
-// restitution=True would otherwise run silently as eps = 1. An int is taken where a real is
-// expected (restitution=1), as is any real with __float__ (numpy.float32); a float is never taken
-// where an integer is (particles=2.5).
+// restitution=True would otherwise run silently as eps = 1 (numpy's bool likewise). An int is
+// taken where a real is expected (restitution=1), as is any real with __float__ (numpy.float32,
+// Fraction); a float is never taken where an integer is (particles=2.5), nor a complex number
+// (numpy's would drop its imaginary part) or an array (np.array([0.9])) where one number is.
 template <class T>
 T keyword_as(const std::string& name, py::handle value) {
   PyObject* const o = value.ptr();
+  const NumpyKind numpy = numpy_kind(value);
   if constexpr (std::is_same_v<T, bool>) {
-    if (!PyBool_Check(o)) wrong_type(name, "True or False", value);
+    if (!PyBool_Check(o) && !(numpy.kind == 'b' && numpy.ndim == 0))
+      wrong_type(name, "True or False", value);
   } else if constexpr (std::is_integral_v<T>) {
-    if (PyBool_Check(o) || !PyIndex_Check(o)) wrong_type(name, "an integer", value);
+    const bool numpy_integer = (numpy.kind == 'i' || numpy.kind == 'u') && numpy.ndim == 0;
+    if (PyBool_Check(o) || !PyIndex_Check(o) || (numpy.kind != 0 && !numpy_integer))
+      wrong_type(name, "an integer", value);
   } else if constexpr (std::is_floating_point_v<T>) {
-    if (PyBool_Check(o) ||
+    const bool numpy_real =
+        (numpy.kind == 'i' || numpy.kind == 'u' || numpy.kind == 'f') && numpy.ndim == 0;
+    if (PyBool_Check(o) || (numpy.kind != 0 && !numpy_real) ||
         !(PyFloat_Check(o) || PyIndex_Check(o) || py::hasattr(value, "__float__")))
       wrong_type(name, "a real number", value);
   } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-    if (PyUnicode_Check(o) || !PySequence_Check(o))
+    if (PyUnicode_Check(o) || PyBytes_Check(o) || PyByteArray_Check(o) || !PySequence_Check(o) ||
+        (numpy.kind != 0 && numpy.ndim != 1))
       wrong_type(name, "a list of real numbers", value);
+    // A tuple owns its items: numpy hands out each element as a new object, which a handle
+    // into the sequence would not keep alive.
+    const py::tuple items(py::reinterpret_borrow<py::object>(value));
     T out;
-    for (py::handle item : py::reinterpret_borrow<py::sequence>(value))
-      out.push_back(keyword_as<double>(name, item));
+    for (py::handle item : items) out.push_back(keyword_as<double>(name, item));
     return out;
   } else {
     if (!PyUnicode_Check(o)) wrong_type(name, "a string", value);
@@ -79,18 +112,32 @@ T keyword_as(const std::string& name, py::handle value) {
 std::string path_keyword(const std::string& name, py::handle value) {
   if (!PyUnicode_Check(value.ptr()) && !py::hasattr(value, "__fspath__"))
     wrong_type(name, "a file name (str or os.PathLike)", value);
-  return keyword_as<std::string>(name, py::module_::import("os").attr("fspath")(value));
+  std::string path = keyword_as<std::string>(name, py::module_::import("os").attr("fspath")(value));
+  // An empty name would read as "none given": restart="" would start a new run without a word.
+  if (path.empty()) throw py::value_error(name + ": the file name is empty");
+  return path;
 }
 
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
 py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
-                           py::handle b_arg, py::handle tolerance_arg) {
+                           py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg) {
   const int dim = keyword_as<int>("dim", dim_arg);
   const double restitution = keyword_as<double>("restitution", restitution_arg);
   const double density = keyword_as<double>("density", density_arg);
   const double b = keyword_as<double>("b", b_arg);
-  const double tolerance = keyword_as<double>("tolerance", tolerance_arg);
+  const std::string quadrature = keyword_as<std::string>("quadrature", quadrature_arg);
   if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
+  if (quadrature != "gauss" && quadrature != "adaptive")
+    throw py::value_error("quadrature: must be one of {gauss, adaptive}, got " +
+                          repr_text(quadrature_arg));
+  // The Gauss rules are exact for these integrands and take no tolerance: one given with them
+  // would be ignored without a word.
+  const double tolerance =
+      tolerance_arg.is_none() ? 1e-10 : keyword_as<double>("tolerance", tolerance_arg);
+  if (quadrature == "gauss" && !tolerance_arg.is_none())
+    throw py::value_error(
+        "tolerance: applies to quadrature='adaptive' only (the Gauss rules are "
+        "exact for these integrands)");
   if (!(tolerance >= theory::k_min_relative_tolerance &&
         tolerance <= theory::k_max_relative_tolerance))
     throw py::value_error("tolerance: value " + repr_text(py::float_(tolerance)) +
@@ -104,6 +151,8 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   inputs.density = density;
   inputs.restitution = restitution;
   inputs.correlation_b = b;
+  inputs.quadrature.method = quadrature == "adaptive" ? theory::QuadratureMethod::adaptive
+                                                      : theory::QuadratureMethod::gauss;
   inputs.quadrature.relative_tolerance = tolerance;
   theory::CoolingPrediction p;
   try {
@@ -117,6 +166,7 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   d["restitution"] = restitution;
   d["density"] = density;
   d["b"] = b;
+  d["quadrature"] = quadrature;
   d["packing_fraction"] = p.packing_fraction;
   d["g2"] = estimate({p.g2, 0.0});  // closed forms: exact
   d["a2"] = estimate({p.a2, 0.0});
@@ -232,16 +282,96 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
   return a;
 }
 
+// Ctrl-C during a run. Python's own SIGINT handler only notes the signal, and the interpreter runs
+// the Python handler (KeyboardInterrupt) when it next executes Python code: after the run, which
+// may take hours. While a run started from the main thread goes on, a handler in front of Python's
+// also asks the run to stop (CheckpointOptions::interrupt): it stops at its next sample time or
+// progress pause (at most 2^20 events) once its relaxation is done, writes its checkpoint if it
+// has a path, and KeyboardInterrupt is raised. Signals with other Python handlers (a SIGINT or
+// SIGTERM handler of the caller's, an alarm) are run in the progress pauses, and stop the run
+// when they raise.
+std::atomic<bool> g_interrupt_requested{false};
+struct sigaction g_python_sigint {};
+
+void on_sigint(int signal) {
+  g_interrupt_requested.store(true);
+  g_python_sigint.sa_handler(signal);  // Python's: notes the signal for the interpreter
+}
+
+bool in_main_thread() {
+  const py::module_ threading = py::module_::import("threading");
+  const py::object main_ident = threading.attr("main_thread")().attr("ident");
+  return main_ident.equal(threading.attr("get_ident")());
+}
+
+// Puts on_sigint in front of Python's SIGINT handler for its lifetime: in the main thread, and only
+// where SIGINT raises KeyboardInterrupt (not where it is ignored, left to the system's default or
+// given to a handler of the caller's).
+class SigintWatch {
+ public:
+  SigintWatch() {
+    g_interrupt_requested.store(false);
+    if (!in_main_thread()) return;
+    const py::module_ signal_module = py::module_::import("signal");
+    if (!signal_module.attr("getsignal")(SIGINT).is(signal_module.attr("default_int_handler")))
+      return;
+    struct sigaction current {};
+    if (sigaction(SIGINT, nullptr, &current) != 0) return;
+    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler == SIG_DFL ||
+        current.sa_handler == SIG_IGN)
+      return;
+    g_python_sigint = current;
+    struct sigaction ours = current;
+    ours.sa_handler = on_sigint;
+    installed_ = sigaction(SIGINT, &ours, nullptr) == 0;
+  }
+  ~SigintWatch() {
+    if (installed_) sigaction(SIGINT, &g_python_sigint, nullptr);
+  }
+  SigintWatch(const SigintWatch&) = delete;
+  SigintWatch& operator=(const SigintWatch&) = delete;
+
+ private:
+  bool installed_ = false;
+};
+
+struct RunInterrupted {};  // thrown out of a DSMC run, which has no interrupt of its own
+
 py::dict simulate(const py::kwargs& kwargs) {
   sim::CheckpointOptions checkpoints;
   const sim::Parameters p = parameters_from(kwargs, checkpoints);
-  sim::RunResult r;
-  try {
-    py::gil_scoped_release release;                      // the engine touches no Python object
-    r = *sim::run_with_checkpoints(p, {}, checkpoints);  // no interrupt: always a result
-  } catch (const sim::CheckpointError& e) {
-    throw py::value_error(e.what());
+  const bool main_thread = in_main_thread();
+  std::optional<py::error_already_set> signal_error;  // raised by a Python signal handler
+  std::optional<sim::RunResult> result;
+  {
+    const SigintWatch watch;
+    checkpoints.interrupt = &g_interrupt_requested;
+    const sim::ProgressReporter look_at_signals = [&](const sim::Progress&) {
+      if (main_thread && !g_interrupt_requested.load()) {
+        const py::gil_scoped_acquire gil;
+        if (PyErr_CheckSignals() != 0) {
+          signal_error.emplace();  // takes the exception the handler raised
+          g_interrupt_requested.store(true);
+        }
+      }
+      if (p.method == sim::Method::dsmc && g_interrupt_requested.load()) throw RunInterrupted{};
+    };
+    try {
+      py::gil_scoped_release release;  // the engine touches no Python object
+      result = sim::run_with_checkpoints(p, look_at_signals, checkpoints);
+    } catch (const sim::CheckpointError& e) {
+      throw py::value_error(e.what());
+    } catch (const RunInterrupted&) {
+      result.reset();
+    }
+  }  // Python's own SIGINT handler is back
+  if (!result) {
+    if (signal_error) throw std::move(*signal_error);
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    PyErr_SetNone(PyExc_KeyboardInterrupt);  // a handler that raised nothing: still no result
+    throw py::error_already_set();
   }
+  const sim::RunResult& r = *result;
   const auto& s = r.samples;
   py::dict d;
   d["t"] = column<double>(s, [](const sim::Sample& x) { return x.t; });
@@ -271,6 +401,51 @@ py::dict simulate(const py::kwargs& kwargs) {
   return d;
 }
 
+// help(molchaos.simulate): every keyword from the parameter table, with its default, range, unit
+// and meaning, so that the text cannot fall behind the parameters the function takes.
+std::string simulate_doc() {
+  std::string doc =
+      "One cooling run: relaxation at restitution 1, then the cooling gas to t_end, sampled on a\n"
+      "log-spaced grid (the CLI's `molchaos simulate`; the same parameters give the same numbers,\n"
+      "bit for bit). Keywords only; an unknown keyword, a value of the wrong type (TypeError) or\n"
+      "out of its range (ValueError) is refused naming the parameter.\n\n"
+      "Run parameters (default; allowed range; unit):\n";
+  const sim::Parameters defaults;
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    const std::string name(info.name);
+    std::string text = sim::format_value(defaults, info);
+    if (name == "snapshot_times") text = "[]";
+    if (text == "false") text = "False";
+    if (!info.choices.empty()) text = "'" + text + "'";
+    doc += "  " + name + (name == "dimension" ? " (or dim)" : "") + " = " + text + "; ";
+    if (text == "False")
+      doc += "True or False";
+    else
+      doc += info.choices.empty() ? sim::range_text(info) : sim::choice_list(info);
+    if (!info.unit.empty()) doc += "; " + std::string(info.unit);
+    doc += "\n      " + std::string(info.doc) + "\n";
+  }
+  doc +=
+      "  (relax_collisions_per_particle defaults to 0 for method = 'dsmc', which relaxes nothing)\n"
+      "\nCheckpoints (event-driven method only):\n"
+      "  checkpoint = FILE (str or os.PathLike), checkpoint_interval = DT (simulated time between\n"
+      "      checkpoints, >= 0): writes the run's whole state;\n"
+      "  restart = FILE: continues a checkpoint; the result equals the uninterrupted run's.\n"
+      "\nCtrl-C stops the run at its next sample time or progress pause (at most 2^20 events; not\n"
+      "during the relaxation) and raises KeyboardInterrupt; with checkpoint = FILE the run's "
+      "state\n"
+      "at that point is written there first. The engine runs without the GIL.\n"
+      "\nReturns a dict:\n"
+      "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
+      "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"
+      "      density fluctuations); collisions, events: uint64 arrays, counts up to each sample;\n"
+      "  snapshots: list of dicts with t, box and positions, velocities (float64, N x d), one per\n"
+      "      snapshot time;\n"
+      "  parameters: dict of every run parameter above (choices as their names);\n"
+      "  version, stop_reason (str); total_collisions, total_events (int); wall_seconds (float).";
+  return doc;
+}
+
 }  // namespace
 }  // namespace molchaos::python
 
@@ -278,15 +453,22 @@ PYBIND11_MODULE(_molchaos, m) {
   using namespace molchaos::python;
   m.doc() = "molchaos: kinetic theory and event-driven MD of granular gases (sigma = m = k_B = 1)";
   m.attr("__version__") = std::string(molchaos::k_version);
-  m.def("theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
-        py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
-        py::arg("b") = py::float_(0.0), py::arg("tolerance") = py::float_(1e-10),
-        "Kinetic-theory prediction for one state point (dim: int, 2 or 3; restitution, density, "
-        "b, tolerance: real numbers): g2, a2, mu2, tau0, A as {value, error} dicts.");
-  m.def("simulate", &simulate,
-        "One cooling run. Keyword arguments are the fields of sim::Parameters (dim, particles, "
-        "density, restitution, randomize, seed, t_end, ...), validated like the CLI's flags; "
-        "returns a dict with numpy arrays t, T, a2, collisions and the run's metadata. "
-        "checkpoint=FILE with checkpoint_interval=DT writes checkpoints; restart=FILE continues "
-        "one (the result equals the uninterrupted run's).");
+  m.def(
+      "theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
+      py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
+      py::arg("b") = py::float_(0.0), py::arg("quadrature") = py::str("gauss"),
+      py::arg("tolerance") = py::none(),
+      "Kinetic-theory prediction for one state point (the CLI's `molchaos theory`).\n\n"
+      "dim: 2 or 3; restitution: in (0, 1]; density: reduced density n, above 0 and below close\n"
+      "packing; b: the velocity correlation at contact of the paper's ansatz, in the range where\n"
+      "f2 and mu2 stay positive (the error names it); quadrature: 'gauss' (fixed rules, exact for\n"
+      "these integrands) or 'adaptive' (GSL's QAGIU, the independent check); tolerance: its\n"
+      "relative tolerance, in [1e-13, 1e-2], default 1e-10 (adaptive only).\n"
+      "Keywords only; a value of the wrong type raises TypeError, one out of range ValueError,\n"
+      "each naming the parameter.\n\n"
+      "Returns a dict: dim, restitution, density, b, quadrature (the inputs); packing_fraction,\n"
+      "omega0, enskog_collision_frequency (floats); g2, a2, mu2, mu2_ratio (mu2/mu2(0,0)),\n"
+      "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
+      "the quadrature's estimate (0 for the closed forms g2 and a2); version (str).");
+  m.def("simulate", &simulate, simulate_doc().c_str());
 }
