@@ -191,7 +191,7 @@ void run_simulate(const SimulateOptions& options) {
   sim::write_csv_file(result, options.out);
   for (std::size_t k = 0; k < result.snapshots.size(); ++k)
     sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
-      sim::write_snapshot_csv(result.snapshots[k], p.dimension, file);
+      sim::write_snapshot_csv(result, k, file);
     });
   if (!options.pair_correlations.empty())
     sim::write_file_atomically(options.pair_correlations, [&](std::ostream& file) {

@@ -18,9 +18,10 @@
 namespace molchaos::app {
 namespace {
 
-// Header keys of a run CSV that describe the result, not its input.
+// Header keys of a run or snapshot CSV that describe the result, not its input.
 const std::set<std::string> k_result_keys = {"version", "stop_reason", "collisions", "events",
-                                             "rows",    "cache_key",   "checksum"};
+                                             "rows",    "cache_key",   "checksum",   "t",
+                                             "box"};
 
 std::string trim(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r");

@@ -439,8 +439,8 @@ std::string simulate_doc() {
       "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
       "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"
       "      density fluctuations); collisions, events: uint64 arrays, counts up to each sample;\n"
-      "  snapshots: list of dicts with t, box and positions, velocities (float64, N x d), one per\n"
-      "      snapshot time;\n"
+      "  snapshots: list of dicts with t, box, collisions (since t = 0) and positions, velocities\n"
+      "      (float64, N x d), one per snapshot time;\n"
       "  parameters: dict of every run parameter above (choices as their names);\n"
       "  version, stop_reason (str); total_collisions, total_events (int); wall_seconds (float).";
   return doc;

@@ -191,9 +191,14 @@ RunResult read_csv_file(const std::string& path) {
   }
 }
 
-void write_snapshot_csv(const Snapshot& snapshot, int dimension, std::ostream& out) {
-  out << "# molchaos snapshot\n# t = " << num(snapshot.t) << "\n# box = " << num(snapshot.box)
-      << "\n";
+void write_snapshot_csv(const RunResult& r, std::size_t index, std::ostream& out) {
+  const Snapshot& snapshot = r.snapshots.at(index);
+  const int dimension = r.parameters.dimension;
+  out << "# molchaos snapshot " << index << " of the run below (sigma = m = 1, T0 = 1)\n"
+      << "# version = " << r.version << "\n";
+  write_parameter_lines(r.parameters, out);
+  out << "# t = " << num(snapshot.t) << "\n# box = " << num(snapshot.box)
+      << "\n# collisions = " << snapshot.collisions << "\n";
   out << (dimension == 2 ? "x,y,vx,vy\n" : "x,y,z,vx,vy,vz\n");
   const std::size_t n = snapshot.positions.size() / static_cast<std::size_t>(dimension);
   for (std::size_t i = 0; i < n; ++i) {

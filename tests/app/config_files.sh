@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Usage: config_files.sh MOLCHAOS EXPECT_USAGE_ERROR
-# Input files: a run repeated from its own CSV header (simulate --config run.csv) and from the TOML
+# Input files: a run repeated from its own CSV header (simulate --config run.csv), from a snapshot's
+# header (run.snapshot0.csv) and from the TOML
 # that --write-config wrote gives the same bytes; flags override the file; every subcommand reads
 # one; unknown keys and out-of-range values are usage errors naming the key and the allowed range.
 set -u
@@ -14,6 +15,10 @@ enter_scratch_folder
 "$bin" simulate --config run.csv --out again.csv --quiet 2>/dev/null || fail "run from run.csv"
 cmp run.csv again.csv || fail "the run repeated from its CSV header differs"
 cmp run.snapshot1.csv again.snapshot1.csv || fail "its snapshot differs"
+"$bin" simulate --config run.snapshot0.csv --out from_snapshot.csv --quiet 2>/dev/null ||
+  fail "run from run.snapshot0.csv"  # a snapshot names its run too
+cmp run.csv from_snapshot.csv && cmp run.snapshot1.csv from_snapshot.snapshot1.csv ||
+  fail "the run repeated from its snapshot's header differs"
 "$bin" simulate --config run.toml --out toml.csv --quiet 2>/dev/null || fail "run from run.toml"
 cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differs"
 sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends

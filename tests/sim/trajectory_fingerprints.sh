@@ -8,7 +8,8 @@
 # not.
 # Usage: tests/sim/trajectory_fingerprints.sh MOLCHAOS [--record]
 # --record rewrites the fingerprints: only for an engine change that alters event order on
-# purpose, said in its commit (check_trajectories.sh shows which cases change). A few seconds.
+# purpose, or a new header of a result file whose rows stay the same, said in its commit
+# (check_trajectories.sh shows which cases change). A few seconds.
 set -euo pipefail
 exe=${1:?usage: trajectory_fingerprints.sh MOLCHAOS [--record]}
 mode=${2:-check}

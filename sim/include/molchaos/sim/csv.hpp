@@ -20,7 +20,9 @@ void write_csv_file(const RunResult& result, const std::string& path);
 RunResult read_csv_file(const std::string& path);
 RunResult read_csv(std::istream& in);
 
-/// One snapshot as CSV: header lines, then x,y[,z],vx,vy[,vz] per particle.
-void write_snapshot_csv(const Snapshot& snapshot, int dimension, std::ostream& out);
+/// Snapshot `index` of a run as CSV: the run's version and parameters (so that the file can be
+/// re-run, `simulate --config`), its time, box side and collisions since t = 0, then
+/// x,y[,z],vx,vy[,vz] per particle.
+void write_snapshot_csv(const RunResult& r, std::size_t index, std::ostream& out);
 
 }  // namespace molchaos::sim
