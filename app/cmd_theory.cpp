@@ -369,14 +369,20 @@ void add_theory_command(CLI::App& app) {
                   "gauss (exact fixed rules) or adaptive (GSL QAGIU, the independent check)")
       ->check(CLI::IsMember({"gauss", "adaptive"}))
       ->capture_default_str();
-  cmd->add_option("--tolerance", options->tolerance,
-                  "relative tolerance of the adaptive quadrature")
+  CLI::Option* tolerance = cmd->add_option("--tolerance", options->tolerance,
+                  "relative tolerance of the adaptive quadrature (with --quadrature adaptive)")
       ->check(
           real_in(theory::k_min_relative_tolerance, true, theory::k_max_relative_tolerance, true))
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
   auto hydrodynamics = add_hydrodynamics_options(*cmd);
-  set_callback_with_config(cmd, [options, hydrodynamics] { run_theory(*options, *hydrodynamics); });
+  set_callback_with_config(cmd, [options, hydrodynamics, tolerance] {
+    // The Gauss rules are exact for these integrands: a tolerance would be taken and do nothing.
+    if (tolerance->count() > 0 && options->quadrature != "adaptive")
+      throw UsageError("--tolerance", "applies to --quadrature adaptive only (the default Gauss "
+                                      "rules are exact and take no tolerance)");
+    run_theory(*options, *hydrodynamics);
+  });
 }
 
 }  // namespace molchaos::app

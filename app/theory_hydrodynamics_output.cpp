@@ -91,6 +91,13 @@ std::string hydrodynamics_text(int dimension, double restitution, double density
   s += fmt::format("  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode 2π/k∥: {:.6g} σ)\n",
                    theory::critical_box_size(c),
                    2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
+  if (!(m.rate > 0)) {  // a box below L_c: the mode decays, the gas stays homogeneous
+    s += fmt::format(
+        "  N = {}: box {:.6g} σ, below L_c: the largest shear mode decays at {:.6g} per "
+        "collision, and S⊥ never reaches {:g}\n",
+        h.particles, m.box, -m.rate, h.growth);
+    return s;
+  }
   s += fmt::format("  N = {}: box {:.6g} σ, largest shear mode grows at {:.6g} per collision\n",
                    h.particles, m.box, m.rate);
   s += fmt::format(
