@@ -44,7 +44,7 @@ bool is_hdf5_file(const std::string& path) {
 }
 
 bool is_result_file(const std::string& path) {
-  return ends_with(path, ".csv") || is_hdf5_file(path);
+  return ends_with(path, ".csv") || ends_with(path, ".xyz") || is_hdf5_file(path);
 }
 
 // One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.
@@ -124,6 +124,21 @@ ConfigItems read_toml(std::istream& in, const std::string& path) {
 }
 
 // A result CSV: "# key = value" lines up to the column line; lists are space separated.
+// The words of a value, split at spaces (a list such as snapshot_times "0 1 10").
+std::vector<std::string> words(const std::string& value) {
+  std::vector<std::string> found;
+  std::string word;
+  for (std::size_t at = 0; at <= value.size(); ++at) {
+    if (at == value.size() || value[at] == ' ') {
+      if (!word.empty()) found.push_back(word);
+      word.clear();
+    } else {
+      word += value[at];
+    }
+  }
+  return found;
+}
+
 ConfigItems read_csv_header(std::istream& in) {
   ConfigItems items;
   std::string line;
@@ -134,18 +149,47 @@ ConfigItems read_csv_header(std::istream& in) {
     const std::string key = trim(line.substr(1, eq - 1));
     if (key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
       continue;  // the title line
-    std::vector<std::string> values;
-    std::string value = line.substr(eq + 3), word;
-    for (std::size_t at = 0; at <= value.size(); ++at) {
-      if (at == value.size() || value[at] == ' ') {
-        if (!word.empty()) values.push_back(word);
-        word.clear();
-      } else {
-        word += value[at];
-      }
-    }
-    items.emplace_back(key, values);
+    items.emplace_back(key, words(line.substr(eq + 3)));
   }
+  return items;
+}
+
+// The comment line of an extended XYZ file's first frame: key=value pairs, a value with spaces in
+// double quotes. The frame's own keys (box, columns, time, collisions) are no inputs.
+ConfigItems read_xyz_header(std::istream& in, const std::string& path) {
+  std::string count, comment;
+  if (!std::getline(in, count) || !std::getline(in, comment))
+    throw UsageError("--config", path + ": no comment line (not an extended XYZ file)");
+  if (!comment.empty() && comment.back() == '\r') comment.pop_back();
+  static const std::set<std::string> k_frame_keys = {"Lattice", "Properties", "Time", "Collisions",
+                                                     "pbc"};
+  ConfigItems items;
+  std::size_t at = 0;
+  while (at < comment.size()) {
+    if (comment[at] == ' ') {
+      ++at;
+      continue;
+    }
+    const auto eq = comment.find('=', at);
+    if (eq == std::string::npos)
+      throw UsageError("--config", path + ": '" + comment.substr(at) +
+                                       "' in the first comment line is no key=value pair");
+    const std::string key = comment.substr(at, eq - at);
+    std::string value;
+    if (eq + 1 < comment.size() && comment[eq + 1] == '"') {
+      const auto close = comment.find('"', eq + 2);
+      if (close == std::string::npos)
+        throw UsageError("--config", path + ": unterminated quote after '" + key + "='");
+      value = comment.substr(eq + 2, close - eq - 2);
+      at = close + 1;
+    } else {
+      at = std::min(comment.find(' ', eq), comment.size());
+      value = comment.substr(eq + 1, at - eq - 1);
+    }
+    if (k_frame_keys.count(key) == 0) items.emplace_back(key, words(value));
+  }
+  if (items.empty())
+    throw UsageError("--config", path + ": no run parameters in its first comment line");
   return items;
 }
 
@@ -201,6 +245,7 @@ ConfigItems read_config_file(const std::string& path) {
     in.clear();
     in.seekg(0);
   }
+  if (ends_with(path, ".xyz")) return read_xyz_header(in, path);
   const bool csv = ends_with(path, ".csv");
   if (csv && in.peek() != '#')
     throw UsageError("--config", path + ": no '# key = value' header (not a molchaos result file)");
@@ -210,8 +255,8 @@ ConfigItems read_config_file(const std::string& path) {
 void add_config_option(CLI::App* cmd, std::string& path) {
   cmd->add_option("--config", path,
                   "Options from a TOML file (key = value, keys as the flags or the parameter "
-                  "names), a result CSV's header or an H5MD trajectory's /parameters (repeats "
-                  "that run); flags given win")
+                  "names), a result CSV's header, an H5MD trajectory's /parameters or an "
+                  "extended XYZ file's first comment line (repeats that run); flags given win")
       ->check(CLI::ExistingFile)
       ->configurable(false);
 }

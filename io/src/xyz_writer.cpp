@@ -2,6 +2,7 @@
 #include "molchaos/io/xyz_writer.hpp"
 
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 
 #include <unistd.h>
 
@@ -22,7 +23,9 @@ std::string num(double x) {
 
 }  // namespace
 
-void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
+void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& out) {
+  const sim::Snapshot& s = r.snapshots.at(index);
+  const int dimension = r.parameters.dimension;
   const auto d = static_cast<std::size_t>(dimension);
   const std::size_t n = s.positions.size() / d;
   const std::string L = num(s.box);
@@ -32,7 +35,15 @@ void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
       << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
       << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << num(s.t)
       << " Collisions=" << s.collisions << " pbc=\""
-      << (dimension == 3 ? "T T T" : "T T F") << "\"\n";
+      << (dimension == 3 ? "T T T" : "T T F") << '"';
+  // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted.
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    if (sim::omitted(r.parameters, info)) continue;
+    const std::string value = sim::format_value(r.parameters, info);
+    const bool quote = value.empty() || value.find(' ') != std::string::npos;
+    out << ' ' << info.name << '=' << (quote ? "\"" + value + "\"" : value);
+  }
+  out << '\n';
   for (std::size_t i = 0; i < n; ++i) {
     out << 'X';
     for (std::size_t a = 0; a < 3; ++a) out << ' ' << (a < d ? num(s.positions[i * d + a]) : "0");
@@ -43,7 +54,7 @@ void write_xyz_frame(const sim::Snapshot& s, int dimension, std::ostream& out) {
 
 void write_xyz_file(const sim::RunResult& r, const std::string& path) {
   sim::write_file_atomically(path, [&](std::ostream& out) {
-    for (const auto& s : r.snapshots) write_xyz_frame(s, r.parameters.dimension, out);
+    for (std::size_t k = 0; k < r.snapshots.size(); ++k) write_xyz_frame(r, k, out);
   });
 }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Usage: config_files.sh MOLCHAOS EXPECT_USAGE_ERROR
 # Input files: a run repeated from its own CSV header (simulate --config run.csv), from a snapshot's
-# header (run.snapshot0.csv) and from the TOML
+# header (run.snapshot0.csv), from its H5MD and XYZ trajectories and from the TOML
 # that --write-config wrote gives the same bytes; flags override the file; every subcommand reads
 # one; unknown keys and out-of-range values are usage errors naming the key and the allowed range.
 set -u
@@ -40,6 +40,12 @@ if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5
   cmp run.csv traj_again.csv && cmp traj.h5 traj_again.h5 && cmp traj.xyz traj_again.xyz ||
     fail "the run repeated from its H5MD trajectory differs"
   echo "ok: a run repeated from its H5MD trajectory, byte for byte"
+  # And from its extended XYZ file, whose comment lines carry the parameters.
+  "$bin" simulate --config traj.xyz --out xyz_again.csv --xyz xyz_again.xyz --quiet \
+    2>/dev/null || fail "run from traj.xyz"
+  cmp run.csv xyz_again.csv && cmp traj.xyz xyz_again.xyz ||
+    fail "the run repeated from its XYZ file differs"
+  echo "ok: a run repeated from its extended XYZ file, byte for byte"
 fi
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"

@@ -2,6 +2,7 @@
 // single-configuration format that OVITO and ASE open. Disks (d = 2) are written with z = 0.
 #pragma once
 
+#include <cstddef>
 #include <ostream>
 #include <string>
 
@@ -9,8 +10,10 @@
 
 namespace molchaos::io {
 
-/// One frame: particle count, comment line with Lattice, Properties, pbc and Time, then the rows.
-void write_xyz_frame(const sim::Snapshot& snapshot, int dimension, std::ostream& out);
+/// Frame `index` of r: particle count, a comment line with Lattice, Properties, Time,
+/// Collisions, pbc and the run's parameters (their table names, a list quoted: the file can be
+/// re-run, `simulate --config run.xyz`), then the rows.
+void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& out);
 
 /// All snapshots of r, one frame each, to path (temporary file, then rename).
 void write_xyz_file(const sim::RunResult& r, const std::string& path);
