@@ -1,7 +1,17 @@
-# Sourced by the shell tests: fail(), a scratch folder that is removed on exit (with any tmpfs
-# mounted in it unmounted first), and small tmpfs mounts that make a full disk to order.
+# Sourced by the shell tests: fail(), refused(), a scratch folder that is removed on exit (with any
+# tmpfs mounted in it unmounted first), and small tmpfs mounts that make a full disk to order.
 
 fail() { echo "FAIL: $*"; exit 1; }
+
+# refused REGEX ARGS...: "$bin" ARGS is a usage error whose one line matches REGEX, as "$expect"
+# (expect_usage_error.sh) checks; a miss is printed and counted in $failures (the caller sets
+# failures=0 first and fails at the end when it is not 0).
+refused() {
+  local regex=$1
+  shift
+  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
+  head -1 out.txt
+}
 
 scratch_mounts=()
 scratch_folder=""

@@ -13,12 +13,6 @@ args=("${base[@]}" --restitution 0.9)
 "$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
   fail "run with checkpoints"
 failures=0
-refused() {  # refused REGEX ARGS...: molchaos simulate ARGS is a usage error matching REGEX
-  local regex=$1
-  shift
-  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
-  head -1 out.txt
-}
 refused "--restart.*parameter restitution differs: checkpoint 0.9, this run 0.8.*only t_end" \
   "${base[@]}" --restitution 0.8 --out b.csv --restart ck --write-config b.toml
 refused "--restart.*parameter contact_statistics differs" \

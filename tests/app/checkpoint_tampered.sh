@@ -49,21 +49,21 @@ open(out, "wb").write(data)
 PY
 }
 failures=0
-refused() {  # refused REGEX FILE: resuming from FILE is a usage error matching REGEX
+refused_restart() {  # refused_restart REGEX FILE: resuming from FILE is a usage error matching REGEX
   "$expect" "$1" "$bin" "${args[@]}" --t-end 30 --out b.csv --restart "$2" >out.txt ||
     { cat out.txt; failures=$((failures + 1)); }
   head -1 out.txt
 }
 tamper nan_position nan
-refused "--restart.*particle 0 has a position or velocity that is not finite" nan_position
+refused_restart "--restart.*particle 0 has a position or velocity that is not finite" nan_position
 tamper outside outside
-refused "--restart.*particle 0 lies outside the box" outside
+refused_restart "--restart.*particle 0 lies outside the box" outside
 tamper velocity velocity
-refused "--restart.*kinetic energy .* differs from the velocities'" velocity
+refused_restart "--restart.*kinetic energy .* differs from the velocities'" velocity
 tamper overlap overlap
-refused "--restart.*particle 1 lies outside the cell it is filed in" overlap
+refused_restart "--restart.*particle 1 lies outside the cell it is filed in" overlap
 tamper wall wall
-refused "--restart.*wall time .* not a finite time >= 0" wall
+refused_restart "--restart.*wall time .* not a finite time >= 0" wall
 [ ! -e b.csv ] || fail "an output written by a refused restart"
 "$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null ||
   fail "the untouched checkpoint"

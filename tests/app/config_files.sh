@@ -71,12 +71,6 @@ printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
 echo "ok: sweep and theory read their options from files; a sweep repeats from its summary"
 
 failures=0
-refused() {  # refused REGEX ARGS...
-  local regex=$1
-  shift
-  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
-  head -1 out.txt
-}
 printf 'densty = 0.1\n' >typo.toml
 refused "--config: typo.toml: unknown key 'densty' for simulate; allowed: dim, particles, density" \
   simulate --config typo.toml

@@ -10,12 +10,6 @@ expect=$(realpath "$2")
 . "$(dirname "$0")/../scratch.sh"
 enter_scratch_folder
 failures=0
-refused() {  # refused REGEX ARGS...
-  local regex=$1
-  shift
-  "$expect" "$regex" "$bin" "$@" >out.txt || { cat out.txt; failures=$((failures + 1)); }
-  head -1 out.txt
-}
 message="empty name; give a path, or leave the option out$"
 for flag in --out --checkpoint --restart --write-config --pair-correlations; do
   refused "^molchaos: error: $flag: $message" simulate --snapshot-times 1 "$flag" ""
