@@ -4,7 +4,6 @@
 
 #include <hdf5.h>
 
-#include <charconv>
 #include <cstdint>
 #include <stdexcept>
 #include <type_traits>
@@ -42,13 +41,6 @@ class QuietErrors {
   H5E_auto2_t function_ = nullptr;
   void* data_ = nullptr;
 };
-
-// Shortest text that reads back to the same double, as the CSV header writes it.
-std::string round_trip(double x) {
-  char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, end);
-}
 
 class AttributeReader {
  public:
@@ -120,7 +112,7 @@ std::vector<std::string> row_values(AttributeReader& reader, const sim::Paramete
         std::vector<std::string> texts;
         if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::vector<double>>) {
           for (double x : reader.numbers<double>(H5T_NATIVE_DOUBLE, H5T_FLOAT))
-            texts.push_back(round_trip(x));
+            texts.push_back(sim::round_trip_text(x));
           if (std::is_same_v<T, double> && texts.size() != 1) reader.fail("is not one number");
         } else if constexpr (std::is_same_v<T, std::uint64_t>) {
           for (std::uint64_t x : reader.numbers<std::uint64_t>(H5T_NATIVE_UINT64, H5T_INTEGER))

@@ -1,41 +1,29 @@
 // Extended XYZ as read by ASE and OVITO: the comment line holds key=value pairs.
 #include "molchaos/io/xyz_writer.hpp"
 
-#include "molchaos/sim/atomic_file.hpp"
-#include "molchaos/sim/parameter_table.hpp"
-
 #include <unistd.h>
 
-#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
+#include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
+
 namespace molchaos::io {
-namespace {
-
-// Shortest text that reads back to the same double.
-std::string num(double x) {
-  char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, end);
-}
-
-}  // namespace
 
 void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& out) {
   const sim::Snapshot& s = r.snapshots.at(index);
   const int dimension = r.parameters.dimension;
   const auto d = static_cast<std::size_t>(dimension);
   const std::size_t n = s.positions.size() / d;
-  const std::string L = num(s.box);
+  const std::string L = sim::round_trip_text(s.box);
   // Disks: the third cell vector has the disk diameter as length and is not periodic.
   const std::string z = dimension == 3 ? L : "1";
   out << n << '\n'
       << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
-      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << num(s.t)
-      << " Collisions=" << s.collisions << " pbc=\""
-      << (dimension == 3 ? "T T T" : "T T F") << '"';
+      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << sim::round_trip_text(s.t)
+      << " Collisions=" << s.collisions << " pbc=\"" << (dimension == 3 ? "T T T" : "T T F") << '"';
   // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted.
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     if (sim::omitted(r.parameters, info)) continue;
@@ -46,8 +34,10 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
   out << '\n';
   for (std::size_t i = 0; i < n; ++i) {
     out << 'X';
-    for (std::size_t a = 0; a < 3; ++a) out << ' ' << (a < d ? num(s.positions[i * d + a]) : "0");
-    for (std::size_t a = 0; a < 3; ++a) out << ' ' << (a < d ? num(s.velocities[i * d + a]) : "0");
+    for (std::size_t a = 0; a < 3; ++a)
+      out << ' ' << (a < d ? sim::round_trip_text(s.positions[i * d + a]) : "0");
+    for (std::size_t a = 0; a < 3; ++a)
+      out << ' ' << (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
     out << '\n';
   }
 }

@@ -16,13 +16,6 @@
 namespace molchaos::sim {
 namespace {
 
-// Shortest representation that reads back to the same double; locale independent.
-std::string num(double x) {
-  char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, end);
-}
-
 const char* const k_base_columns = "t,T,a2,collisions,events,velocity_mode,density_mode";
 const char* const k_contact_sum_columns =
     ",contacts,sum_c1e_c2e,sum_c1_dot_c2,sum_gn2,sum_abs_gn,sum_g2";
@@ -89,12 +82,14 @@ void write_csv(const RunResult& r, std::ostream& out) {
       << "# rows = " << r.samples.size() << "\n"
       << k_base_columns << (p.contact_statistics ? contact_columns() : "") << "\n";
   for (const Sample& s : r.samples) {
-    out << num(s.t) << ',' << num(s.temperature) << ',' << num(s.a2) << ',' << s.collisions << ','
-        << s.events << ',' << num(s.velocity_mode) << ',' << num(s.density_mode);
+    out << round_trip_text(s.t) << ',' << round_trip_text(s.temperature) << ','
+        << round_trip_text(s.a2) << ',' << s.collisions << ',' << s.events << ','
+        << round_trip_text(s.velocity_mode) << ',' << round_trip_text(s.density_mode);
     if (p.contact_statistics) {
       const ContactMoments& c = s.contacts;
-      out << ',' << c.count << ',' << num(c.sum_c1e_c2e) << ',' << num(c.sum_c1_dot_c2) << ','
-          << num(c.sum_gn2) << ',' << num(c.sum_abs_gn) << ',' << num(c.sum_g2);
+      out << ',' << c.count << ',' << round_trip_text(c.sum_c1e_c2e) << ','
+          << round_trip_text(c.sum_c1_dot_c2) << ',' << round_trip_text(c.sum_gn2) << ','
+          << round_trip_text(c.sum_abs_gn) << ',' << round_trip_text(c.sum_g2);
       for (const auto count : c.impact_histogram) out << ',' << count;
     }
     out << '\n';
@@ -197,14 +192,16 @@ void write_snapshot_csv(const RunResult& r, std::size_t index, std::ostream& out
   out << "# molchaos snapshot " << index << " of the run below (sigma = m = 1, T0 = 1)\n"
       << "# version = " << r.version << "\n";
   write_parameter_lines(r.parameters, out);
-  out << "# t = " << num(snapshot.t) << "\n# box = " << num(snapshot.box)
+  out << "# t = " << round_trip_text(snapshot.t) << "\n# box = " << round_trip_text(snapshot.box)
       << "\n# collisions = " << snapshot.collisions << "\n";
   out << (dimension == 2 ? "x,y,vx,vy\n" : "x,y,z,vx,vy,vz\n");
   const std::size_t n = snapshot.positions.size() / static_cast<std::size_t>(dimension);
   for (std::size_t i = 0; i < n; ++i) {
-    for (int a = 0; a < dimension; ++a) out << num(snapshot.positions[i * dimension + a]) << ',';
     for (int a = 0; a < dimension; ++a)
-      out << num(snapshot.velocities[i * dimension + a]) << (a + 1 < dimension ? ',' : '\n');
+      out << round_trip_text(snapshot.positions[i * dimension + a]) << ',';
+    for (int a = 0; a < dimension; ++a)
+      out << round_trip_text(snapshot.velocities[i * dimension + a])
+          << (a + 1 < dimension ? ',' : '\n');
   }
 }
 

@@ -10,13 +10,6 @@
 namespace molchaos::sim {
 namespace {
 
-// Shortest representation that reads back to the same double; locale independent.
-std::string round_trip(double x) {
-  char buffer[64];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, end);
-}
-
 template <class T>
 bool parse_number(std::string_view text, T& out) {
   const char* first = text.data();
@@ -35,6 +28,12 @@ bool inside(double x, const ParameterRange& r) {
 }
 
 }  // namespace
+
+std::string round_trip_text(double x) {
+  char buffer[64];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, end);
+}
 
 std::string message_number(double x) {
   std::ostringstream out;
@@ -137,14 +136,14 @@ std::string format_value(const Parameters& p, const ParameterInfo& info) {
         } else if constexpr (is_integer_v<T>) {
           return std::to_string(value);
         } else if constexpr (std::is_same_v<T, double>) {
-          return round_trip(value);
+          return round_trip_text(value);
         } else if constexpr (std::is_enum_v<T>) {
           return std::string(info.choices[choice_index(p, info)]);
         } else {
           std::string list;
           for (double t : value) {
             if (!list.empty()) list += ' ';
-            list += round_trip(t);
+            list += round_trip_text(t);
           }
           return list;
         }

@@ -164,6 +164,10 @@ inline const std::array<ParameterInfo, 16>& parameter_table() {
 /// A number as validation messages print it (10 significant digits, "inf", "nan").
 std::string message_number(double x);
 
+/// The shortest text that reads back to the same double, locale independent: how every result
+/// file (CSV, XYZ, the parameter values) writes a number.
+std::string round_trip_text(double x);
+
 /// The row of a field name, or nullptr.
 const ParameterInfo* find_parameter(std::string_view name);
 
