@@ -82,7 +82,7 @@ std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
     return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
   } catch (const sim::CheckpointError& e) {
     throw UsageError("--restart", e.what());
-  } catch (const std::invalid_argument& e) {  // a request the engine refuses (a relaxation too long)
+  } catch (const std::invalid_argument& e) {  // refused by the engine (too long a relaxation)
     throw_as_usage_error("simulate", e.what());
   }
 }

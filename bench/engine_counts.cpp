@@ -76,9 +76,8 @@ int main(int argc, char** argv) {
     run<3>(molchaos::bench::spheres_case(which == "spheres10" ? 0.1 : 0.4), 500000);
   } else {
     std::fprintf(stderr,
-                 "usage: engine_counts paper|paper_series|paper_contacts|disks1e3|disks1e4|disks1e5|"
-                 "disks1e6|spheres10|"
-        "spheres40\n");
+                 "usage: engine_counts paper|paper_series|paper_contacts|disks1e3|disks1e4|"
+                 "disks1e5|disks1e6|spheres10|spheres40\n");
     return 2;
   }
   return 0;

@@ -39,7 +39,8 @@ void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunRe
             std::to_string(wall_seconds) + " s) not a finite time >= 0");
   if (snapshots > 1u << 20) in.fail("corrupt snapshot count");
   result.snapshots.resize(static_cast<std::size_t>(snapshots));
-  for (Snapshot& snap : result.snapshots) in(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
+  for (Snapshot& snap : result.snapshots)
+    in(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
 }
 
 template <class RunEngine>
