@@ -37,7 +37,7 @@ struct TheoryOptions {
   double restitution = 0.9;
   double density = 0.05;
   double correlation_b = 0.0;
-  double tolerance = 1e-10;
+  double tolerance = theory::QuadratureOptions{}.relative_tolerance;
   std::string quadrature = "gauss";
   bool json = false;
 };

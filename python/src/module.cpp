@@ -133,7 +133,8 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   // The Gauss rules are exact for these integrands and take no tolerance: one given with them
   // would be ignored without a word.
   const double tolerance =
-      tolerance_arg.is_none() ? 1e-10 : keyword_as<double>("tolerance", tolerance_arg);
+      tolerance_arg.is_none() ? theory::QuadratureOptions{}.relative_tolerance
+                              : keyword_as<double>("tolerance", tolerance_arg);
   if (quadrature == "gauss" && !tolerance_arg.is_none())
     throw py::value_error(
         "tolerance: applies to quadrature='adaptive' only (the Gauss rules are "
