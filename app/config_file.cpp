@@ -34,8 +34,7 @@ bool ends_with(const std::string& text, const std::string& tail) {
          text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// A result file whose header is read: a CSV (by its name) or an H5MD trajectory (HDF5, by its
-// first bytes: the name may end in .h5, .hdf5 or .h5md).
+// An H5MD trajectory is known by HDF5's first bytes (its name may end in .h5, .hdf5 or .h5md).
 bool is_hdf5_file(const std::string& path) {
   static constexpr char k_signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
   std::ifstream in(path, std::ios::binary);
@@ -43,6 +42,7 @@ bool is_hdf5_file(const std::string& path) {
   return in.read(head, sizeof head) && std::equal(head, head + 8, k_signature);
 }
 
+// A result file whose header is read: a CSV or XYZ file (by its name) or an H5MD trajectory.
 bool is_result_file(const std::string& path) {
   return ends_with(path, ".csv") || ends_with(path, ".xyz") || is_hdf5_file(path);
 }
@@ -123,7 +123,6 @@ ConfigItems read_toml(std::istream& in, const std::string& path) {
   return items;
 }
 
-// A result CSV: "# key = value" lines up to the column line; lists are space separated.
 // The words of a value, split at spaces (a list such as snapshot_times "0 1 10").
 std::vector<std::string> words(const std::string& value) {
   std::vector<std::string> found;
@@ -139,6 +138,7 @@ std::vector<std::string> words(const std::string& value) {
   return found;
 }
 
+// A result CSV: "# key = value" lines up to the column line; lists are space separated.
 ConfigItems read_csv_header(std::istream& in) {
   ConfigItems items;
   std::string line;

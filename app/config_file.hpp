@@ -1,8 +1,9 @@
 // Input files: every subcommand takes its options from a file (--config FILE) as well as from
 // flags, the flags winning. A file is either TOML (key = value; strings, booleans, numbers,
 // one-line arrays; no tables), a result CSV (a name ending in .csv), whose "# key = value"
-// header is read, or an H5MD trajectory (HDF5, known by its first bytes), whose /parameters
-// attributes are read: `simulate --config run.csv` (or run.h5) repeats that run. A key is a
+// header is read, an H5MD trajectory (HDF5, known by its first bytes), whose /parameters
+// attributes are read, or an extended XYZ file (.xyz), whose first comment line is read:
+// `simulate --config run.csv` (or run.h5, run.xyz) repeats that run. A key is a
 // parameter table name (t_end, relax_collisions_per_particle) or an option's long name (t-end,
 // relax, seeds); each value goes through the option's own check, so an out-of-range value names
 // its range as a flag would.

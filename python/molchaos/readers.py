@@ -109,7 +109,8 @@ def read_run_csv(path):
 
 def read_snapshot_csv(path):
     """A snapshot file written next to a run CSV (`--snapshot-times`): (DataFrame with columns x,
-    y[, z], vx, vy[, vz], one row per particle; metadata with the time t and the box side)."""
+    y[, z], vx, vy[, vz], one row per particle; metadata with the time t, the box side, the
+    collisions since t = 0 and the run's version and parameters)."""
     path = _file_name(path)
     metadata, _ = _read_header(path)
     frame = _read_rows(path)
@@ -132,7 +133,7 @@ def read_table(path):
 
 def read_trajectory(path):
     """An H5MD file written by `molchaos simulate --trajectory`: dict with numpy arrays time (F),
-    step (F), position and velocity (F x N x d), edges (d), and the run's parameters."""
+    step (F, the collisions since t = 0), position and velocity (F x N x d), edges (d), and the run's parameters."""
     import h5py
 
     path = _file_name(path)
