@@ -284,6 +284,39 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
         "coarse-grained velocity field. Look at whether the density is still uniform and "
         "whether neighbouring arrows align (clusters and vortices).",
         c.fig3_restitution, c.fig3_density);
+  if (file.starts_with("fig_pair_correlations"))
+    return "Velocity correlations of pairs at separation r, at the state point of the title: "
+           "G∥(r) = ⟨(c1·r̂)(c2·r̂)⟩ (left) and G⊥(r) = ⟨c1·c2 − (c1·r̂)(c2·r̂)⟩/(d − 1) (right), "
+           "c = v/√(2T), at the collisions per particle τ of the key, for the original gas "
+           "(filled, solid) and the flux-shuffled gas (open, dashed); error bars one standard "
+           "error of the pair averages. Molecular chaos makes both zero at every r. Look at how "
+           "far out the original gas's correlations reach, and at their sign.";
+  if (file.starts_with("fig_contact_moments"))
+    return "Collision averages of the reduced pre-collision velocities c = v/√(2T) against ε, "
+           "⟨(c1·e)(c2·e)⟩ (blue) and ⟨c1·c2⟩ (orange), mean ± standard error over runs, one "
+           "panel per dimension and density: the original gas (filled) and the two "
+           "molecular-chaos references, the flux-shuffled gas and the DSMC gas (open). Under "
+           "molecular chaos both equal −1/4 + a2/16 (dashed: a2 = 0). Look at how far above it "
+           "the original gas lies, and at the gap between its two averages: its transverse "
+           "velocity correlation at contact, zero under molecular chaos.";
+  if (file.starts_with("fig_cooling_decomposition"))
+    return "The cooling rate of the original gas against the flux-shuffled gas (molecular "
+           "chaos), paired by seed, mean ± standard error over the pairs, one panel per "
+           "dimension and density: ln(A_orig/A_chaos) from the Haff fits, and its two factors, "
+           "ln(ω_chaos/ω_orig) from the collision frequencies and ln(Y_chaos/Y_orig) from the "
+           "energy lost per collision, Y = ⟨(v12·e)²⟩/(4T). The cooling rate is the product of "
+           "the two, so the first series should equal the sum of the other two. Look at "
+           "which factor carries the original gas's slower cooling.";
+  if (file.starts_with("fig_structure_factor") && !file.starts_with("fig_structure_factor_3d"))
+    return fmt::format(
+        "Break-down of the homogeneous cooling state, ε = {}, n = {}: left, S⊥(k, τ) of the "
+        "largest shear modes of the original gas in the two boxes of the key, run mean ± "
+        "standard error (points), against linear hydrodynamics with no free parameter (lines); "
+        "middle and right, S⊥ and the density structure factor S of the largest modes against "
+        "ln t for the original gas and the two shuffled gases (1: no structure). Look at the "
+        "vortices that grow as predicted in the original gas, the density that follows, and "
+        "the shuffled gases that stay at 1.",
+        r.gas_fields.spec.restitution, r.gas_fields.spec.density);
   if (file.starts_with("fig_flow_field"))
     return fmt::format(
         "Flow and density fields of the original gas and the randomized gases (ε = {}, n = {}, "
