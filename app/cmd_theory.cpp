@@ -18,6 +18,7 @@
 #include "config_file.hpp"
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/contact_response.hpp"
+#include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/dimension.hpp"
@@ -48,6 +49,11 @@ theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
                                         : theory::QuadratureMethod::gauss;
   q.relative_tolerance = o.tolerance;
   return q;
+}
+
+// Beyond the equilibrium fluid, where the Enskog factor's equation of state no longer holds.
+bool g2_extrapolated(int dimension, double packing_fraction) {
+  return packing_fraction > theory::fluid_limit_packing(dimension);
 }
 
 nlohmann::json number_or_null(double x) {
@@ -211,6 +217,7 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
                  {"tolerance", o.tolerance},   {"units", "sigma = m = k_B = 1; T = m<v^2>/d"}};
   j["packing_fraction"] = p.packing_fraction;
   j["g2"] = p.g2;
+  j["g2_extrapolated"] = g2_extrapolated(o.dimension, p.packing_fraction);
   j["a2"] = p.a2;
   j["mu2"] = p.mu2.value;
   j["mu2_error"] = p.mu2.error;
@@ -261,6 +268,11 @@ void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
   std::cout << "units: σ = m = k_B = 1, T0 = 1, T = m<v²>/d\n\n";
   std::cout << fmt::format("  packing fraction η   {:.10g}\n", p.packing_fraction);
   std::cout << fmt::format("  g2(σ)                {:.10g}\n", p.g2);
+  if (g2_extrapolated(o.dimension, p.packing_fraction))
+    std::cout << fmt::format(
+        "  note: η lies beyond the equilibrium fluid (η ≤ {} for {}): g2(σ), from the fluid's "
+        "equation of state, and every number below built on it are extrapolations\n",
+        theory::fluid_limit_packing(o.dimension), o.dimension == 2 ? "disks" : "spheres");
   std::cout << fmt::format("  a2(ε)                {:.10g}\n", p.a2);
   std::cout << fmt::format("  μ2                   {:.12g} ± {:.2g}\n", p.mu2.value, p.mu2.error);
   std::cout << fmt::format("  μ2/μ2(0,0)           {:.12g} ± {:.2g}\n", p.mu2_ratio.value,

@@ -24,4 +24,9 @@ double contact_value_g2_at_density(int dimension, double density) {
   return contact_value_g2(dimension, packing_fraction(dimension, density));
 }
 
+double fluid_limit_packing(int dimension) {
+  require_dimension(dimension);
+  return dimension == 2 ? 0.700 : 0.494;
+}
+
 }  // namespace molchaos::theory
