@@ -267,6 +267,16 @@ py::dict parameters_dict(const sim::Parameters& p) {
   return d;
 }
 
+// The names of the table's flags, True or False in parameters_dict: an H5MD file stores them as
+// the integers 0 and 1 (HDF5 has no boolean type), which read_trajectory reads back as bools.
+py::tuple flag_parameters() {
+  py::list names;
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    if (std::holds_alternative<bool sim::Parameters::*>(info.field))
+      names.append(std::string(info.name));
+  return py::tuple(names);
+}
+
 template <class T, class Get>
 py::array_t<T> column(const std::vector<sim::Sample>& samples, Get get) {
   py::array_t<T> a(static_cast<py::ssize_t>(samples.size()));
@@ -472,4 +482,5 @@ PYBIND11_MODULE(_molchaos, m) {
       "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
       "the quadrature's estimate (0 for the closed forms g2 and a2); version (str).");
   m.def("simulate", &simulate, simulate_doc().c_str());
+  m.attr("_flag_parameters") = flag_parameters();
 }
