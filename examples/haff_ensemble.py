@@ -2,9 +2,11 @@
 its mean temperature with scipy, beside the kinetic theory's tau0.
 
     python3 examples/haff_ensemble.py [runs]
+
+runs: a whole number >= 2 (default 4): the error bar of tau0 is the spread between runs.
 """
 
-import sys
+import argparse
 
 import numpy as np
 from scipy.optimize import curve_fit
@@ -16,7 +18,13 @@ def haff(t, tau0):
     return 1.0 / (1.0 + t / tau0) ** 2
 
 
+# The standard error of the mean tau0 comes from the spread of the runs' fits: one run has none.
+RUNS_RULE = "a whole number >= 2 (the error bar of tau0 is the spread between runs)"
+
+
 def main(runs=4, particles=400, restitution=0.9, density=0.05, t_end=40.0):
+    if isinstance(runs, bool) or not isinstance(runs, int) or runs < 2:
+        raise ValueError(f"runs: must be {RUNS_RULE}, got {runs!r}")
     series = [molchaos.simulate(dim=2, particles=particles, density=density,
                                 restitution=restitution, seed=seed, t_end=t_end,
                                 relax_collisions_per_particle=5.0)
@@ -39,5 +47,19 @@ def main(runs=4, particles=400, restitution=0.9, density=0.05, t_end=40.0):
     return fit
 
 
+def runs_argument(text):
+    """The command line's runs, checked before any run starts."""
+    try:
+        runs = int(text)
+    except ValueError:
+        runs = None
+    if runs is None or runs < 2:
+        raise argparse.ArgumentTypeError(f"must be {RUNS_RULE}, got {text!r}")
+    return runs
+
+
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 4)
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("runs", nargs="?", type=runs_argument, default=4,
+                        help=f"independent runs, {RUNS_RULE}; default 4")
+    main(parser.parse_args().runs)

@@ -9,22 +9,13 @@
 #include <type_traits>
 #include <variant>
 
+#include "hdf5_handle.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::io {
 namespace {
 
-// Closes an HDF5 handle at scope exit (ids < 0, failed opens, are not closed).
-struct Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  Handle(hid_t id_, herr_t (*close_)(hid_t)) : id(id_), close(close_) {}
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  ~Handle() {
-    if (id >= 0) close(id);
-  }
-};
+using detail::Handle;
 
 // HDF5's own error printing off while in scope: a failure is reported once, as the exception.
 class QuietErrors {

@@ -15,11 +15,14 @@
 #include <variant>
 #include <vector>
 
+#include "hdf5_handle.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::io {
 namespace {
+
+using detail::Handle;
 
 hid_t check(hid_t id, const char* what) {
   if (id < 0) throw std::runtime_error(std::string("HDF5: cannot create ") + what);
@@ -29,13 +32,6 @@ hid_t check(hid_t id, const char* what) {
 void check_status(herr_t status, const char* what) {
   if (status < 0) throw std::runtime_error(std::string("HDF5: cannot write ") + what);
 }
-
-// Closes an HDF5 handle at scope exit, whichever close function its kind needs.
-struct Handle {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  ~Handle() { close(id); }
-};
 
 void string_attribute(hid_t where, const char* name, const std::string& value) {
   Handle type{H5Tcopy(H5T_C_S1), H5Tclose};

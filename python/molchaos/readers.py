@@ -133,7 +133,10 @@ def read_table(path):
 
 def read_trajectory(path):
     """An H5MD file written by `molchaos simulate --trajectory`: dict with numpy arrays time (F),
-    step (F, the collisions since t = 0), position and velocity (F x N x d), edges (d), and the run's parameters."""
+    step (F, the collisions since t = 0), position and velocity (F x N x d), edges (d), and
+    parameters: the run's parameters as simulate() returns them (numbers as int or float, lists
+    as lists of floats, choices as their names, flags such as contact_statistics as True or
+    False, stored in the file as 1 or 0), with its stop_reason and version."""
     import h5py
 
     path = _file_name(path)
@@ -156,9 +159,23 @@ def read_trajectory(path):
             "position": particles["position/value"][()],
             "velocity": particles["velocity/value"][()],
             "edges": particles["box/edges"][()],
-            "parameters": {k: _attribute(v) for k, v in f["parameters"].attrs.items()},
+            "parameters": _parameters(path, f["parameters"].attrs),
         }
     return out
+
+
+def _parameters(path, attributes):
+    """The /parameters attributes, each flag (stored as the integer 1 or 0) as True or False."""
+    from ._molchaos import _flag_parameters
+
+    parameters = {k: _attribute(v) for k, v in attributes.items()}
+    for name in _flag_parameters:
+        if name in parameters:
+            if parameters[name] not in (0, 1) or isinstance(parameters[name], float):
+                raise ValueError(f"{path}: attribute /parameters/{name} is not a flag, 0 or 1: "
+                                 f"{parameters[name]!r}")
+            parameters[name] = parameters[name] == 1
+    return parameters
 
 
 def _attribute(value):

@@ -70,8 +70,9 @@ NumpyKind numpy_kind(py::handle value) {
 // taken where a real is expected (restitution=1), as is any real with __float__ (numpy.float32,
 // Fraction); a float is never taken where an integer is (particles=2.5), nor a complex number
 // (numpy's would drop its imaginary part) or an array (np.array([0.9])) where one number is.
+// An integer beyond the C++ type is a ValueError naming `range`, the parameter's allowed range.
 template <class T>
-T keyword_as(const std::string& name, py::handle value) {
+T keyword_as(const std::string& name, py::handle value, const std::string& range = "") {
   PyObject* const o = value.ptr();
   const NumpyKind numpy = numpy_kind(value);
   if constexpr (std::is_same_v<T, bool>) {
@@ -103,8 +104,11 @@ T keyword_as(const std::string& name, py::handle value) {
   try {
     return value.cast<T>();
   } catch (const py::cast_error&) {  // an integer beyond the parameter's type: a value error
+    if (range.empty())
+      throw py::value_error(name + ": value " + repr_text(value) +
+                            " does not fit the parameter's type");
     throw py::value_error(name + ": value " + repr_text(value) +
-                          " does not fit the parameter's type");
+                          " is outside the allowed range " + range);
   }
 }
 
@@ -121,12 +125,14 @@ std::string path_keyword(const std::string& name, py::handle value) {
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
 py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
                            py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg) {
-  const int dim = keyword_as<int>("dim", dim_arg);
+  const int dim = keyword_as<int>("dim", dim_arg, "{2, 3}");
   const double restitution = keyword_as<double>("restitution", restitution_arg);
   const double density = keyword_as<double>("density", density_arg);
   const double b = keyword_as<double>("b", b_arg);
   const std::string quadrature = keyword_as<std::string>("quadrature", quadrature_arg);
-  if (dim != 2 && dim != 3) throw py::value_error("dim: value must be 2 or 3");
+  if (dim != 2 && dim != 3)
+    throw py::value_error("dim: value " + std::to_string(dim) +
+                          " is outside the allowed range {2, 3}");
   if (quadrature != "gauss" && quadrature != "adaptive")
     throw py::value_error("quadrature: must be one of {gauss, adaptive}, got " +
                           repr_text(quadrature_arg));
@@ -160,7 +166,11 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
     py::gil_scoped_release release;
     p = theory::predict_cooling(inputs);
   } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());  // the message starts with the field's name
+    // The message starts with the field's name, which is the keyword's but for correlation_b.
+    const std::string field = "correlation_b:";
+    std::string message = e.what();
+    if (message.starts_with(field)) message.replace(0, field.size(), "b:");
+    throw py::value_error(message);
   }
   py::dict d;
   d["dim"] = dim;
@@ -220,7 +230,7 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
         [&](auto member) {
           using T = std::remove_cvref_t<decltype(p.*member)>;
           if constexpr (is_plain_v<T>) {
-            p.*member = keyword_as<T>(name, v);
+            p.*member = keyword_as<T>(name, v, sim::range_text(*info));
           } else {
             try {
               sim::parse_value(p, *info, keyword_as<std::string>(name, v));
@@ -265,6 +275,16 @@ py::dict parameters_dict(const sim::Parameters& p) {
         },
         info.field);
   return d;
+}
+
+// The names of the table's flags, True or False in parameters_dict: an H5MD file stores them as
+// the integers 0 and 1 (HDF5 has no boolean type), which read_trajectory reads back as bools.
+py::tuple flag_parameters() {
+  py::list names;
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    if (std::holds_alternative<bool sim::Parameters::*>(info.field))
+      names.append(std::string(info.name));
+  return py::tuple(names);
 }
 
 template <class T, class Get>
@@ -472,4 +492,5 @@ PYBIND11_MODULE(_molchaos, m) {
       "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
       "the quadrature's estimate (0 for the closed forms g2 and a2); version (str).");
   m.def("simulate", &simulate, simulate_doc().c_str());
+  m.attr("_flag_parameters") = flag_parameters();
 }

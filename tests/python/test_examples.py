@@ -3,6 +3,7 @@
 import importlib.util
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -24,6 +25,22 @@ def test_haff_ensemble_fit_agrees_with_theory():
     # (t distribution with 3 degrees of freedom: two-sided p = 0.015); the theory's quadrature
     # error is negligible beside it.
     assert abs(fit["tau0"] - fit["theory"]) < 5 * fit["tau0_error"] + fit["theory_error"]
+
+
+@pytest.mark.parametrize("runs", ["1", "0", "-3", "2.5", "four"])
+def test_haff_ensemble_refuses_fewer_than_two_runs_naming_the_argument(runs):
+    # Was: one run printed "± nan" (the standard error of a single value); a word, a traceback.
+    out = subprocess.run([sys.executable, os.path.join(EXAMPLES, "haff_ensemble.py"), "--", runs],
+                         capture_output=True, text=True, timeout=60)
+    assert out.returncode == 2 and out.stdout == ""
+    assert "argument runs: must be a whole number >= 2" in out.stderr
+    assert repr(runs) in out.stderr and "Traceback" not in out.stderr
+
+
+@pytest.mark.parametrize("runs", [1, 0, 2.0, True])
+def test_haff_ensemble_main_refuses_fewer_than_two_runs(runs):
+    with pytest.raises(ValueError, match=r"runs: must be a whole number >= 2 .*got " + repr(runs)):
+        load("haff_ensemble").main(runs=runs)
 
 
 def test_fig4_from_reproduce_quick(molchaos_bin, tmp_path):

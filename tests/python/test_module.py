@@ -183,11 +183,29 @@ def test_numbers_of_other_python_types_are_taken():
     assert molchaos.theory(restitution=1)["A"] == molchaos.theory(restitution=1.0)["A"]
     eps = np.float32(0.9)
     assert molchaos.theory(restitution=eps)["restitution"] == float(eps)
-    # An integer beyond the parameter's C++ type is a value out of range, not a wrong type.
-    with pytest.raises(ValueError, match="seed: value -1 does not fit"):
+    # An integer beyond the parameter's C++ type is a value out of range, not a wrong type; the
+    # message names the allowed range (was: "does not fit the parameter's type").
+    with pytest.raises(ValueError, match=rf"seed: value -1 is outside the allowed range "
+                                         rf"\[0, {2**64 - 1}\]"):
         molchaos.simulate(**dict(SMALL, seed=-1))
-    with pytest.raises(ValueError, match=f"particles: value {2**70} does not fit"):
+    with pytest.raises(ValueError, match=rf"max_collisions: value {2**64} is outside the "
+                                         rf"allowed range \[0, {2**64 - 1}\]"):
+        molchaos.simulate(**dict(SMALL, max_collisions=2**64))
+    with pytest.raises(ValueError, match=rf"particles: value {2**70} is outside the allowed "
+                                         r"range \[2, 100000000\]"):
         molchaos.simulate(**dict(SMALL, particles=2**70))
+    with pytest.raises(ValueError, match=rf"dim: value {2**70} is outside the allowed range "
+                                         r"\{2, 3\}"):
+        molchaos.theory(dim=2**70)
+    with pytest.raises(ValueError, match=r"dim: value 4 is outside the allowed range \{2, 3\}"):
+        molchaos.theory(dim=4)
+
+
+@pytest.mark.parametrize("b,shown", [(float("nan"), "nan"), (5.0, "5")])
+def test_theory_b_out_of_range_is_named_by_its_keyword(b, shown):
+    # Was: named correlation_b, a name theory() does not take.
+    with pytest.raises(ValueError, match=rf"^b: value {shown} is outside the allowed range \[-2, "):
+        molchaos.theory(b=b)
 
 
 def test_checkpoint_takes_a_path_object(tmp_path):

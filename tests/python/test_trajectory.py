@@ -128,3 +128,36 @@ def test_h5md_parameters_are_the_table(run):
         assert randomize == header["randomize"]
         assert int(attrs["contact_statistics"]) == (header["contact_statistics"] == "true")
         assert list(attrs["snapshot_times"]) == [float(x) for x in header["snapshot_times"].split()]
+
+
+@pytest.mark.parametrize("contacts", [False, True])
+def test_read_trajectory_gives_the_parameters_simulate_gives(molchaos_bin, tmp_path, contacts):
+    """Every parameter of read_trajectory equals simulate()'s for the same run, in value and in
+    Python type: a flag such as contact_statistics, stored as the integer 0 or 1, reads as False or
+    True (was: 0 or 1), as simulate() and read_run_csv give it."""
+    subprocess.run(
+        [molchaos_bin, "simulate", "--particles", "150", "--density", "0.05", "--seed", "7",
+         "--t-end", "6", "--relax", "5", "--quiet", "--snapshot-times", "2", "6",
+         *(["--contacts"] if contacts else []), "--out", str(tmp_path / "run.csv"),
+         "--trajectory", str(tmp_path / "run.h5")],
+        check=True, capture_output=True)
+    run = molchaos.simulate(particles=150, density=0.05, seed=7, t_end=6.0,
+                            relax_collisions_per_particle=5.0, snapshot_times=[2.0, 6.0],
+                            contact_statistics=contacts)
+    read = molchaos.read_trajectory(tmp_path / "run.h5")["parameters"]
+    assert read["contact_statistics"] is contacts
+    assert {k: (type(read[k]), read[k]) for k in run["parameters"]} == \
+        {k: (type(v), v) for k, v in run["parameters"].items()}
+    _, header = molchaos.read_run_csv(tmp_path / "run.csv")
+    assert header["contact_statistics"] is contacts
+
+
+def test_read_trajectory_refuses_a_flag_that_is_not_0_or_1(run, tmp_path):
+    _, d, _ = run
+    path = tmp_path / "edited.h5"
+    path.write_bytes((d / "run.h5").read_bytes())
+    with h5py.File(path, "r+") as f:
+        f["parameters"].attrs.modify("contact_statistics", np.int64(2))
+    with pytest.raises(ValueError, match=r"edited\.h5: attribute /parameters/contact_statistics "
+                                         r"is not a flag, 0 or 1: 2"):
+        molchaos.read_trajectory(path)
