@@ -170,9 +170,13 @@ void run_simulate(const SimulateOptions& options) {
       const double rate = report.wall_seconds > 0
                               ? static_cast<double>(report.collisions) / report.wall_seconds
                               : 0.0;
-      std::fprintf(stderr, "\rsimulate: %5.1f%%  %.3g collisions  %.3g M collisions/s   ",
-                   100.0 * std::min(1.0, report.fraction_done),
-                   static_cast<double>(report.collisions), rate / 1e6);
+      if (report.relaxing)
+        std::fprintf(stderr, "\rsimulate: relaxing  %.3g collisions  %.3g M collisions/s   ",
+                     static_cast<double>(report.collisions), rate / 1e6);
+      else
+        std::fprintf(stderr, "\rsimulate: %5.1f%%  %.3g collisions  %.3g M collisions/s   ",
+                     100.0 * std::min(1.0, report.fraction_done),
+                     static_cast<double>(report.collisions), rate / 1e6);
       std::fflush(stderr);
     };
   const std::optional<sim::RunResult> run = run_checkpointed(options, progress);

@@ -307,8 +307,9 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
 // the Python handler (KeyboardInterrupt) when it next executes Python code: after the run, which
 // may take hours. While a run started from the main thread goes on, a handler in front of Python's
 // also asks the run to stop (CheckpointOptions::interrupt): it stops at its next sample time or
-// progress pause (at most 2^20 events) once its relaxation is done, writes its checkpoint if it
-// has a path, and KeyboardInterrupt is raised. Signals with other Python handlers (a SIGINT or
+// progress pause (at most 2^20 events, the relaxation's included), writes its checkpoint if it
+// has a path and the relaxation is done (a half-relaxed state has none), and KeyboardInterrupt
+// is raised. Signals with other Python handlers (a SIGINT or
 // SIGTERM handler of the caller's, an alarm) are run in the progress pauses, and stop the run
 // when they raise.
 std::atomic<bool> g_interrupt_requested{false};
@@ -452,10 +453,10 @@ std::string simulate_doc() {
       "  checkpoint = FILE (str or os.PathLike), checkpoint_interval = DT (simulated time between\n"
       "      checkpoints, >= 0): writes the run's whole state;\n"
       "  restart = FILE: continues a checkpoint; the result equals the uninterrupted run's.\n"
-      "\nCtrl-C stops the run at its next sample time or progress pause (at most 2^20 events; not\n"
-      "during the relaxation) and raises KeyboardInterrupt; with checkpoint = FILE the run's "
-      "state\n"
-      "at that point is written there first. The engine runs without the GIL.\n"
+      "\nCtrl-C stops the run at its next sample time or progress pause (at most 2^20 events, in\n"
+      "the relaxation too) and raises KeyboardInterrupt; with checkpoint = FILE the run's state\n"
+      "at that point is written there first (none during the relaxation, before t = 0). The\n"
+      "engine runs without the GIL.\n"
       "\nReturns a dict:\n"
       "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
       "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"

@@ -129,7 +129,8 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
 }
 
 template <int D, class Observer>
-void Engine<D, Observer>::relax(double collisions_per_particle) {
+bool Engine<D, Observer>::relax(double collisions_per_particle, const std::function<bool()>& go_on,
+                                std::uint64_t pause_events) {
   const auto target = static_cast<std::uint64_t>(
       std::ceil(collisions_per_particle * static_cast<double>(n_) / 2.0));
   // A relaxation counts collisions, not time: in a gas so dilute that a particle crosses many
@@ -156,13 +157,15 @@ void Engine<D, Observer>::relax(double collisions_per_particle) {
   if (target > 0) {
     collision_limit_ = collisions_ + target;
     for (;;) {
-      const Outcome outcome =
-          dispatch(k_inf, std::numeric_limits<std::uint64_t>::max(), CollisionModel::elastic());
+      const std::uint64_t event_limit =
+          go_on ? events_ + pause_events : std::numeric_limits<std::uint64_t>::max();
+      const Outcome outcome = dispatch(k_inf, event_limit, CollisionModel::elastic());
       if (outcome == Outcome::resync) {
         resync();
         continue;
       }
       if (outcome != Outcome::paused) break;
+      if (go_on && !go_on()) return false;
     }
   }
   collision_limit_ = limit;
@@ -189,6 +192,7 @@ void Engine<D, Observer>::relax(double collisions_per_particle) {
   stalled_events_ = 0;
   observer_ = Observer{};
   rebuild_events();
+  return true;
 }
 
 template <int D, class Observer>

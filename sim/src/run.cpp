@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <limits>
 #include <numbers>
@@ -52,7 +53,7 @@ std::string run_layout() {
 // The relaxation, or its end state restored from an earlier run of the same key
 // (relaxed_states.hpp): the same state either way, bit for bit.
 template <class RunEngine>
-void relax_or_restore(RunEngine& engine, const Parameters& p) {
+bool relax_or_restore(RunEngine& engine, const Parameters& p, const std::function<bool()>& go_on) {
   const bool shared = relaxed_states_shared() && engine.memory_bytes() <= k_largest_kept_state;
   const std::string key = shared ? relaxed_state_key(p, run_layout<RunEngine>()) : std::string();
   if (shared)
@@ -60,13 +61,14 @@ void relax_or_restore(RunEngine& engine, const Parameters& p) {
       CheckpointReader in(*state, "relaxed state " + key);
       engine.restore_state(in);
       in.finish();
-      return;
+      return true;
     }
-  engine.relax(p.relax_collisions_per_particle);
-  if (!shared) return;
+  if (!engine.relax(p.relax_collisions_per_particle, go_on)) return false;
+  if (!shared) return true;
   CheckpointWriter out;
   engine.save_state(out);
   keep_relaxed_state(key, out.data());
+  return true;
 }
 
 // Observer: ContactStatistics when the run records them, else NoObserver (nothing per collision).
@@ -90,8 +92,17 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
   result.version = k_version;
   result.stop_reason = StopReason::t_end;
   double done = -std::numeric_limits<double>::infinity();  // last target reached and observed
+  auto interrupted = [&] {
+    return checkpoints.interrupt != nullptr && checkpoints.interrupt->load();
+  };
   if (checkpoints.restart.empty()) {
-    relax_or_restore(engine, p);
+    // Relaxing: pauses for the progress reporter and an interrupt, which returns no result
+    // (a half-relaxed state has nothing to checkpoint).
+    const auto go_on = [&] {
+      if (progress) progress({0.0, engine.collisions(), engine.events(), elapsed(), true});
+      return !interrupted();
+    };
+    if (!relax_or_restore(engine, p, go_on)) return std::nullopt;
   } else {
     double saved_t_end = 0;
     CheckpointReader in =
@@ -124,9 +135,6 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     engine.save_state(out);
     write_checkpoint_file(checkpoints.path, p, run_layout<RunEngine>(), out.data());
     last_wall = elapsed();
-  };
-  auto interrupted = [&] {
-    return checkpoints.interrupt != nullptr && checkpoints.interrupt->load();
   };
   auto wall_due = [&] {
     return checkpoints.wall_interval > 0 && elapsed() - last_wall >= checkpoints.wall_interval;

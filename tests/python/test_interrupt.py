@@ -107,3 +107,15 @@ def test_runs_in_several_threads_give_the_single_threaded_arrays():
         for key in ("t", "T", "a2", "collisions", "events"):
             np.testing.assert_array_equal(a[key], b[key])
         assert theory["A"] == molchaos.theory(restitution=0.8)["A"]
+
+
+# A relaxation of several seconds (elastic collisions before t = 0), then a short run.
+LONG_RELAXATION = ("dict(particles=4000, density=0.3, restitution=1.0, "
+                   "relax_collisions_per_particle=5000.0, t_end=1.0)")
+
+
+def test_ctrl_c_during_the_relaxation_stops_the_run_promptly():
+    # Was: Ctrl-C was obeyed only once the whole relaxation was done.
+    words = run_script(INTERRUPT.format(delay=0.5, kwargs=LONG_RELAXATION)).split()
+    assert words[0] == "interrupted"
+    assert float(words[1]) < 5  # the first relaxation pause after the signal (2^20 events)

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
@@ -52,7 +53,11 @@ class Engine {
   /// to 1, time and counters reset to 0. Throws std::invalid_argument (naming
   /// relax_collisions_per_particle and its range here) when that would take more than 1e11
   /// events: in extremely dilute gases, where cell crossings outnumber collisions by far.
-  void relax(double collisions_per_particle);
+  /// With `go_on`, the relaxation pauses every `pause_events` events (a pause changes nothing in
+  /// the state) and calls go_on(): when it returns false, relax() returns false at once and the
+  /// engine, half relaxed, is fit only to be discarded.
+  bool relax(double collisions_per_particle, const std::function<bool()>& go_on = {},
+             std::uint64_t pause_events = std::uint64_t{1} << 20);
 
   /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
   void set_state(const std::vector<double>& positions, const std::vector<double>& velocities);

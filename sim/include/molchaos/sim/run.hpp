@@ -21,6 +21,7 @@ struct Progress {
   std::uint64_t collisions = 0;
   std::uint64_t events = 0;
   double wall_seconds = 0;
+  bool relaxing = false;  // in the relaxation before t = 0 (fraction_done 0, counts its own)
 };
 using ProgressReporter = std::function<void(const Progress&)>;
 
