@@ -51,11 +51,6 @@ theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
   return q;
 }
 
-// Beyond the equilibrium fluid, where the Enskog factor's equation of state no longer holds.
-bool g2_extrapolated(int dimension, double packing_fraction) {
-  return packing_fraction > theory::fluid_limit_packing(dimension);
-}
-
 nlohmann::json number_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
@@ -217,7 +212,7 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
                  {"tolerance", o.tolerance},   {"units", "sigma = m = k_B = 1; T = m<v^2>/d"}};
   j["packing_fraction"] = p.packing_fraction;
   j["g2"] = p.g2;
-  j["g2_extrapolated"] = g2_extrapolated(o.dimension, p.packing_fraction);
+  j["g2_extrapolated"] = theory::g2_extrapolated(o.dimension, p.packing_fraction);
   j["a2"] = p.a2;
   j["mu2"] = p.mu2.value;
   j["mu2_error"] = p.mu2.error;
@@ -268,7 +263,7 @@ void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
   std::cout << "units: σ = m = k_B = 1, T0 = 1, T = m<v²>/d\n\n";
   std::cout << fmt::format("  packing fraction η   {:.10g}\n", p.packing_fraction);
   std::cout << fmt::format("  g2(σ)                {:.10g}\n", p.g2);
-  if (g2_extrapolated(o.dimension, p.packing_fraction))
+  if (theory::g2_extrapolated(o.dimension, p.packing_fraction))
     std::cout << fmt::format(
         "  note: η lies beyond the equilibrium fluid (η ≤ {} for {}): g2(σ), from the fluid's "
         "equation of state, and every number below built on it are extrapolations\n",

@@ -21,6 +21,7 @@
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/run.hpp"
+#include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/version.hpp"
@@ -180,6 +181,7 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
   d["quadrature"] = quadrature;
   d["packing_fraction"] = p.packing_fraction;
   d["g2"] = estimate({p.g2, 0.0});  // closed forms: exact
+  d["g2_extrapolated"] = theory::g2_extrapolated(dim, p.packing_fraction);
   d["a2"] = estimate({p.a2, 0.0});
   d["mu2"] = estimate(p.mu2);
   d["mu2_ratio"] = estimate(p.mu2_ratio);
@@ -491,7 +493,9 @@ PYBIND11_MODULE(_molchaos, m) {
       "Returns a dict: dim, restitution, density, b, quadrature (the inputs); packing_fraction,\n"
       "omega0, enskog_collision_frequency (floats); g2, a2, mu2, mu2_ratio (mu2/mu2(0,0)),\n"
       "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
-      "the quadrature's estimate (0 for the closed forms g2 and a2); version (str).");
+      "the quadrature's estimate (0 for the closed forms g2 and a2); g2_extrapolated (bool: the\n"
+      "packing lies beyond the equilibrium fluid, 0.700 for disks and 0.494 for spheres, where\n"
+      "g2 and every number built on it extrapolate the fluid's equation of state); version (str).");
   m.def("simulate", &simulate, simulate_doc().c_str());
   m.attr("_flag_parameters") = flag_parameters();
 }

@@ -32,6 +32,18 @@ def test_theory_equals_cli_json(molchaos_bin):
         py["A"]["error"] + py["tau0"]["error"] * (1 - 0.9**2) + 1e-15 * py["A"]["value"]
 
 
+@pytest.mark.parametrize("dim, density, beyond", [(2, 0.05, False), (2, 1.15, True),
+                                                  (3, 0.9, False), (3, 0.95, True)])
+def test_theory_says_where_g2_extrapolates_as_the_cli_does(molchaos_bin, dim, density, beyond):
+    # Beyond the equilibrium fluid (packing 0.700 for disks, 0.494 for spheres; n = 0.9 and 0.95
+    # lie either side of it in d = 3) g2 extrapolates the fluid's equation of state.
+    out = subprocess.run(
+        [molchaos_bin, "theory", "--dim", str(dim), "--restitution", "0.9", "--density",
+         str(density), "--json"], check=True, capture_output=True, text=True).stdout
+    assert json.loads(out)["g2_extrapolated"] is beyond
+    assert molchaos.theory(dim=dim, restitution=0.9, density=density)["g2_extrapolated"] is beyond
+
+
 def test_theory_rejects_bad_density():
     with pytest.raises(ValueError, match="density"):
         molchaos.theory(dim=2, restitution=0.9, density=2.0)

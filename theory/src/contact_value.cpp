@@ -29,4 +29,8 @@ double fluid_limit_packing(int dimension) {
   return dimension == 2 ? 0.700 : 0.494;
 }
 
+bool g2_extrapolated(int dimension, double packing_fraction) {
+  return packing_fraction > fluid_limit_packing(dimension);
+}
+
 }  // namespace molchaos::theory

@@ -19,4 +19,7 @@ double contact_value_g2_at_density(int dimension, double density);
 /// extrapolation of the fluid branch.
 double fluid_limit_packing(int dimension);
 
+/// Whether g2(σ) at this packing fraction lies beyond fluid_limit_packing().
+bool g2_extrapolated(int dimension, double packing_fraction);
+
 }  // namespace molchaos::theory
