@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -42,9 +41,7 @@ void run_sweep_command(SweepCliOptions& o) {
   for (const auto& m : o.methods)  // checked by the option
     o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
   // The default relaxation is EDMD's: a sweep none of whose methods relaxes records none.
-  if (!o.relax_given &&
-      std::none_of(o.spec.methods.begin(), o.spec.methods.end(), sim::method_relaxes))
-    o.spec.relax_collisions_per_particle = 0;
+  if (!o.relax_given) validation::default_relaxation_for_methods(o.spec);
   const std::string remedy = "each point once (use --seeds for more runs per point)";
   reject_repeated_values("--density", o.spec.densities, remedy);
   reject_repeated_values("--restitution", o.spec.restitutions, remedy);

@@ -101,16 +101,28 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.randomize = kind.mode;
           p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
           p.t_end = t_end;
-          // The spec's relaxation is its EDMD runs'; a DSMC run records the none it does.
-          p.relax_collisions_per_particle =
-              sim::method_relaxes(kind.method) ? s.relax_collisions_per_particle : 0.0;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
           p.method = kind.method;
+          // The spec's relaxation is its EDMD runs'; a DSMC run records the none it does.
+          p.relax_collisions_per_particle = s.relax_collisions_per_particle;
+          sim::default_relaxation_for_method(p);
           runs.push_back(p);
         }
     }
   return runs;
+}
+
+void default_relaxation_for_methods(EnsembleSpec& spec) {
+  double relax = 0.0;
+  for (const sim::Method method : spec.methods) {
+    sim::Parameters run;
+    run.method = method;
+    run.relax_collisions_per_particle = spec.relax_collisions_per_particle;
+    sim::default_relaxation_for_method(run);
+    relax = std::max(relax, run.relax_collisions_per_particle);
+  }
+  spec.relax_collisions_per_particle = relax;
 }
 
 EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
@@ -118,7 +130,7 @@ EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
   s.methods = {sim::Method::dsmc};
   s.modes = {sim::Randomization::none};
   s.seeds = seeds;
-  s.relax_collisions_per_particle = 0;
+  default_relaxation_for_methods(s);
   return s;
 }
 
