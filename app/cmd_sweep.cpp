@@ -31,6 +31,12 @@ struct SweepCliOptions {
   bool relax_given = false;  // --relax on the command line or in the --config file
 };
 
+// Why runs of a point gave no value, one line per reason: many seeds that share a reason say it
+// once.
+void print_notes(const validation::PointSummary& s) {
+  for (const auto& line : validation::note_lines(s.notes)) std::cerr << "  note: " << line << '\n';
+}
+
 void run_sweep_command(SweepCliOptions& o) {
   o.spec.modes.clear();
   for (const auto& m : o.modes) {
@@ -83,7 +89,7 @@ void run_sweep_command(SweepCliOptions& o) {
           s.runs >= 2   ? ""
           : s.runs == 0 ? "  (not measured: no run succeeded)"
                         : "  (no error bar: fewer than 2 runs)");
-      for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
+      print_notes(s);
       continue;
     }
     // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
@@ -97,7 +103,7 @@ void run_sweep_command(SweepCliOptions& o) {
         error_bar     ? ""
         : s.runs == 0 ? "  (not measured: no run succeeded)"
                       : "  (no error bar: fewer than 2 runs)");
-    for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
+    print_notes(s);
   }
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();

@@ -308,6 +308,23 @@ BOOST_AUTO_TEST_CASE(spec_relaxation_follows_the_rule_for_each_method) {
   }
 }
 
+// Notes grouped by reason: one line for the runs sharing one, naming how many and the first
+// seeds; a lone run's note names its seed; a failed run's error (which names the run) as it is.
+BOOST_AUTO_TEST_CASE(run_notes_one_line_per_reason) {
+  std::vector<RunNote> notes;
+  for (std::uint64_t seed = 11; seed <= 15; ++seed) notes.push_back({"too short", seed});
+  notes.push_back({"no collision", 7});
+  notes.push_back({"run 3 (seed=9) failed: disk full", std::nullopt});
+  const auto lines = note_lines(notes);
+  BOOST_TEST_REQUIRE(lines.size() == 3u);
+  BOOST_TEST(lines[0] == "5 runs (seeds 11, 12, 13 and 2 more): too short");
+  BOOST_TEST(lines[1] == "seed 7: no collision");
+  BOOST_TEST(lines[2] == "run 3 (seed=9) failed: disk full");
+  BOOST_TEST(note_lines({{"too short", 1}, {"too short", 2}}).at(0) ==
+             "2 runs (seeds 1, 2): too short");
+  BOOST_TEST(note_lines({}).empty());
+}
+
 // A point where no run succeeded has no A: nan (printed as such in every table), not 0.
 BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   const PointSummary s = summarize_point({}, WindowRule{});
@@ -339,7 +356,7 @@ BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
   BOOST_TEST(points[0].summary.runs == 0);
   BOOST_TEST(points[0].summary.failed == 2);
   BOOST_TEST(std::isnan(points[0].collision_ratio.value));
-  BOOST_TEST(points[0].summary.messages.at(0).find("no collision by t_end = 1e-09") !=
+  BOOST_TEST(points[0].summary.notes.at(0).reason.find("no collision by t_end = 1e-09") !=
              std::string::npos);
 }
 

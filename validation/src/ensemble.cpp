@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
@@ -144,11 +145,11 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         std::vector<const sim::RunResult*> group;
         std::vector<double> ratios;
         int failed_runs = 0;
-        std::vector<std::string> errors;
+        std::vector<RunNote> errors;  // a failed run's error names the run
         for (int i = 0; i < spec.seeds; ++i, ++k) {
           if (!runs.at(k).ok) {
             ++failed_runs;
-            errors.push_back(runs[k].error);
+            errors.push_back({runs[k].error, std::nullopt});
             continue;
           }
           // An elastic run without a collision measures no frequency (0 ± 0 from every seed
@@ -156,10 +157,10 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
           // its transient does.
           if (eps >= 1.0 && runs[k].result.collisions == 0) {
             ++failed_runs;
-            errors.push_back(fmt::format(
-                "seed {}: no collision by t_end = {}, so no collision frequency (lengthen the run, "
-                "--t-end-elastic)",
-                runs[k].result.parameters.seed, runs[k].result.parameters.t_end));
+            errors.push_back({fmt::format("no collision by t_end = {}, so no collision frequency "
+                                          "(lengthen the run, --t-end-elastic)",
+                                          runs[k].result.parameters.t_end),
+                              runs[k].result.parameters.seed});
             continue;
           }
           group.push_back(&runs[k].result);
@@ -188,7 +189,7 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         r.method = kind.method;
         r.summary.mode = std::string(sim::to_string(kind.mode));
         r.summary.failed += failed_runs;
-        for (auto& e : errors) r.summary.messages.push_back(e);
+        for (auto& e : errors) r.summary.notes.push_back(std::move(e));
         points.push_back(std::move(r));
       }
   return points;
