@@ -82,6 +82,9 @@ refused "key 'contacts'.*true or false" simulate --config flag.toml
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
 refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
   simulate --config twice.toml
+printf 'density = [0.1, 0.2]\n' >array.toml
+refused "--config: array.toml: key 'density': --density: takes one value, the file gives 2; give one" \
+  simulate --config array.toml
 printf 'dimension = 3\ndim = 2\n' >aliases.toml
 refused "aliases.toml: key 'dim' sets --dim again \(first as 'dimension'\)" simulate --config aliases.toml
 printf '[simulate]\ndensity = 0.1\n' >table.toml
