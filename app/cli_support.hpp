@@ -66,8 +66,10 @@ inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_clos
       [=](std::string& text) -> std::string {
         double x = 0.0;
         const std::size_t used = parse_real(text, x);
-        if (used == 0 || used != text.size() || !std::isfinite(x))
+        if (used == 0 || used != text.size() || std::isnan(x))
           return "'" + text + "' is not a number; allowed range " + range;
+        // An infinite end of a range is open: "inf" is read, and is out of every range.
+        if (std::isinf(x)) return "value " + text + " is not finite; allowed range " + range;
         const bool ok_lo = lo_closed ? x >= lo : x > lo;
         const bool ok_hi = hi_closed ? x <= hi : x < hi;
         if (!ok_lo || !ok_hi) return "value " + text + " is outside the allowed range " + range;

@@ -20,6 +20,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/reference_values.hpp"
 #include "molchaos/validation/ensemble.hpp"
@@ -292,7 +293,7 @@ void add_bench_command(CLI::App& app) {
       ->check(integer_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
-  cmd->callback([o] { run_bench(*o); });
+  set_callback_with_config(cmd, [o] { run_bench(*o); });
 }
 
 }  // namespace molchaos::app

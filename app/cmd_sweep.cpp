@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -32,6 +31,12 @@ struct SweepCliOptions {
   bool relax_given = false;  // --relax on the command line or in the --config file
 };
 
+// Why runs of a point gave no value, one line per reason: many seeds that share a reason say it
+// once.
+void print_notes(const validation::PointSummary& s) {
+  for (const auto& line : validation::note_lines(s.notes)) std::cerr << "  note: " << line << '\n';
+}
+
 void run_sweep_command(SweepCliOptions& o) {
   o.spec.modes.clear();
   for (const auto& m : o.modes) {
@@ -42,9 +47,7 @@ void run_sweep_command(SweepCliOptions& o) {
   for (const auto& m : o.methods)  // checked by the option
     o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
   // The default relaxation is EDMD's: a sweep none of whose methods relaxes records none.
-  if (!o.relax_given &&
-      std::none_of(o.spec.methods.begin(), o.spec.methods.end(), sim::method_relaxes))
-    o.spec.relax_collisions_per_particle = 0;
+  if (!o.relax_given) validation::default_relaxation_for_methods(o.spec);
   const std::string remedy = "each point once (use --seeds for more runs per point)";
   reject_repeated_values("--density", o.spec.densities, remedy);
   reject_repeated_values("--restitution", o.spec.restitutions, remedy);
@@ -86,7 +89,7 @@ void run_sweep_command(SweepCliOptions& o) {
           s.runs >= 2   ? ""
           : s.runs == 0 ? "  (not measured: no run succeeded)"
                         : "  (no error bar: fewer than 2 runs)");
-      for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
+      print_notes(s);
       continue;
     }
     // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
@@ -100,7 +103,7 @@ void run_sweep_command(SweepCliOptions& o) {
         error_bar     ? ""
         : s.runs == 0 ? "  (not measured: no run succeeded)"
                       : "  (no error bar: fewer than 2 runs)");
-    for (const auto& m : s.messages) std::cerr << "  note: " << m << '\n';
+    print_notes(s);
   }
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();

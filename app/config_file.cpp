@@ -11,6 +11,7 @@
 
 #include "cli_support.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#include "repeated_options.hpp"
 #ifdef MOLCHAOS_HAVE_IO
 #include "molchaos/io/h5md_parameters.hpp"
 #endif
@@ -292,6 +293,10 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                            ": an empty value or list; give " +
                            (op->get_items_expected_max() > 1 ? "at least one value" : "one value"));
     }
+    if (takes_one_value(*op) && values.size() > 1)
+      throw UsageError("--config", path + ": key '" + key + "': " + op->get_name() +
+                                       ": takes one value, the file gives " +
+                                       std::to_string(values.size()) + "; give one");
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false
         if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))

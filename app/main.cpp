@@ -8,6 +8,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "molchaos/version.hpp"
+#include "repeated_options.hpp"
 #ifdef MOLCHAOS_HAVE_MPI
 #include "molchaos/mpi/session.hpp"
 #endif
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
   molchaos::app::add_reproduce_command(app);
   molchaos::app::add_bench_command(app);
   molchaos::app::add_simulate_command(app);
+  molchaos::app::refuse_repeated_options(app);
 
   // A first word that is neither a flag nor a subcommand: name it and list the choices.
   if (argc > 1 && argv[1][0] != '-') {

@@ -68,7 +68,12 @@ TOML
 cmp sweep.csv again.csv || fail "the sweep repeated from its summary's header differs"
 printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
 "$bin" theory --config theory.toml | grep -q '"restitution": 0.8' || fail "theory from a file"
-echo "ok: sweep and theory read their options from files; a sweep repeats from its summary"
+printf 'simulation = true\nparticles = [100]\nwork = 1000\nthreads = 1\nout = "bench"\n' >bench.toml
+"$bin" bench --config bench.toml >/dev/null 2>&1 || fail "bench from a file"
+grep -q '^100,10,' bench/work_precision_simulation.csv || fail "bench did not take N and work from the file"
+"$bin" bench --config bench.toml --work 2000 --out bench2 >/dev/null 2>&1 || fail "bench with flags over the file"
+grep -q '^100,20,' bench2/work_precision_simulation.csv || fail "bench flags do not override the file"
+echo "ok: sweep, theory and bench read their options from files; a sweep repeats from its summary"
 
 failures=0
 printf 'densty = 0.1\n' >typo.toml
@@ -82,6 +87,9 @@ refused "key 'contacts'.*true or false" simulate --config flag.toml
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
 refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
   simulate --config twice.toml
+printf 'density = [0.1, 0.2]\n' >array.toml
+refused "--config: array.toml: key 'density': --density: takes one value, the file gives 2; give one" \
+  simulate --config array.toml
 printf 'dimension = 3\ndim = 2\n' >aliases.toml
 refused "aliases.toml: key 'dim' sets --dim again \(first as 'dimension'\)" simulate --config aliases.toml
 printf '[simulate]\ndensity = 0.1\n' >table.toml
@@ -91,6 +99,11 @@ refused "key 'seeds'.*--seeds.*\[1, 100000\]" sweep --config seeds.toml
 printf 'b = 2\n' >b.toml
 refused "--b: value 2 is outside the allowed range \[-2, 0.671216\)" theory --config b.toml
 refused "unknown key 'density' for reproduce" reproduce --config sweep.toml
+refused "unknown key 'density' for bench; allowed: theory, simulation, particles, work, threads, out" \
+  bench --config sweep.toml
+printf 'simulation = true\nparticles = [50]\n' >bench_range.toml
+refused "--config: bench_range.toml: key 'particles': --particles: value 50 is outside the allowed range \[100, 10000000\]" \
+  bench --config bench_range.toml
 refused "--config.*missing.toml" simulate --config missing.toml
 # An empty list keeps an option's default: refused where that would drop the key unseen (a
 # single value, a sweep's list), accepted for snapshot_times, whose default is the empty list.

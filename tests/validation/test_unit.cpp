@@ -3,6 +3,7 @@
 #define BOOST_TEST_MODULE validation_unit
 #include <unistd.h>
 
+#include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <filesystem>
@@ -265,6 +266,65 @@ BOOST_AUTO_TEST_CASE(sweep_over_methods_pairs_each_with_the_modes_it_runs) {
   });
 }
 
+// A spec's relaxation follows sim::default_relaxation_for_method, the one rule: kept while a
+// listed method relaxes, none when no listed method does. The DSMC twin of an MD spec with its
+// own relaxation takes DSMC's and changes nothing else of the runs.
+BOOST_AUTO_TEST_CASE(spec_relaxation_follows_the_rule_for_each_method) {
+  using sim::Method;
+  auto rule_of = [](Method method, double relax) {
+    sim::Parameters run;
+    run.method = method;
+    run.relax_collisions_per_particle = relax;
+    sim::default_relaxation_for_method(run);
+    return run.relax_collisions_per_particle;
+  };
+  EnsembleSpec s;
+  s.relax_collisions_per_particle = 7;
+  const std::vector<std::vector<Method>> method_lists = {
+      {Method::edmd}, {Method::dsmc}, {Method::edmd, Method::dsmc}, {Method::dsmc, Method::edmd}};
+  for (const auto& methods : method_lists) {
+    EnsembleSpec t = s;
+    t.methods = methods;
+    default_relaxation_for_methods(t);
+    const bool relaxes = std::any_of(methods.begin(), methods.end(), sim::method_relaxes);
+    BOOST_TEST(t.relax_collisions_per_particle == (relaxes ? 7.0 : 0.0));
+  }
+  s.particles = 200;
+  s.densities = {0.05, 0.1};
+  s.seeds = 3;
+  const EnsembleSpec twin = dsmc_twin(s, 2);
+  BOOST_TEST(twin.relax_collisions_per_particle == rule_of(Method::dsmc, 7));
+  BOOST_CHECK_NO_THROW(validate(twin));
+  const auto md_runs = expand(s), twin_runs = expand(twin);
+  BOOST_TEST_REQUIRE(twin_runs.size() == 2u * 2u);
+  for (std::size_t k = 0; k < twin_runs.size(); ++k) {
+    const sim::Parameters& run = twin_runs[k];
+    const sim::Parameters& md = md_runs[k / 2 * 3 + k % 2];  // same point, same seed index
+    BOOST_TEST((run.method == Method::dsmc && run.randomize == sim::Randomization::none));
+    BOOST_TEST(run.relax_collisions_per_particle == rule_of(Method::dsmc, 7));
+    BOOST_TEST(run.density == md.density);
+    BOOST_TEST(run.seed == md.seed);
+    BOOST_TEST(run.t_end == md.t_end);
+  }
+}
+
+// Notes grouped by reason: one line for the runs sharing one, naming how many and the first
+// seeds; a lone run's note names its seed; a failed run's error (which names the run) as it is.
+BOOST_AUTO_TEST_CASE(run_notes_one_line_per_reason) {
+  std::vector<RunNote> notes;
+  for (std::uint64_t seed = 11; seed <= 15; ++seed) notes.push_back({"too short", seed});
+  notes.push_back({"no collision", 7});
+  notes.push_back({"run 3 (seed=9) failed: disk full", std::nullopt});
+  const auto lines = note_lines(notes);
+  BOOST_TEST_REQUIRE(lines.size() == 3u);
+  BOOST_TEST(lines[0] == "5 runs (seeds 11, 12, 13 and 2 more): too short");
+  BOOST_TEST(lines[1] == "seed 7: no collision");
+  BOOST_TEST(lines[2] == "run 3 (seed=9) failed: disk full");
+  BOOST_TEST(note_lines({{"too short", 1}, {"too short", 2}}).at(0) ==
+             "2 runs (seeds 1, 2): too short");
+  BOOST_TEST(note_lines({}).empty());
+}
+
 // A point where no run succeeded has no A: nan (printed as such in every table), not 0.
 BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   const PointSummary s = summarize_point({}, WindowRule{});
@@ -296,7 +356,7 @@ BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
   BOOST_TEST(points[0].summary.runs == 0);
   BOOST_TEST(points[0].summary.failed == 2);
   BOOST_TEST(std::isnan(points[0].collision_ratio.value));
-  BOOST_TEST(points[0].summary.messages.at(0).find("no collision by t_end = 1e-09") !=
+  BOOST_TEST(points[0].summary.notes.at(0).reason.find("no collision by t_end = 1e-09") !=
              std::string::npos);
 }
 

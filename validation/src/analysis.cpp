@@ -117,7 +117,7 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
     const RunAnalysis a = analyse_run(*r, rule);
     if (!a.ok) {
       ++s.failed;
-      s.messages.push_back("seed " + std::to_string(p.seed) + ": " + a.message);
+      s.notes.push_back({a.message, p.seed});
       continue;
     }
     ++s.runs;

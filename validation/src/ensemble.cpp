@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
@@ -101,16 +102,28 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.randomize = kind.mode;
           p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
           p.t_end = t_end;
-          // The spec's relaxation is its EDMD runs'; a DSMC run records the none it does.
-          p.relax_collisions_per_particle =
-              sim::method_relaxes(kind.method) ? s.relax_collisions_per_particle : 0.0;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;
           p.method = kind.method;
+          // The spec's relaxation is its EDMD runs'; a DSMC run records the none it does.
+          p.relax_collisions_per_particle = s.relax_collisions_per_particle;
+          sim::default_relaxation_for_method(p);
           runs.push_back(p);
         }
     }
   return runs;
+}
+
+void default_relaxation_for_methods(EnsembleSpec& spec) {
+  double relax = 0.0;
+  for (const sim::Method method : spec.methods) {
+    sim::Parameters run;
+    run.method = method;
+    run.relax_collisions_per_particle = spec.relax_collisions_per_particle;
+    sim::default_relaxation_for_method(run);
+    relax = std::max(relax, run.relax_collisions_per_particle);
+  }
+  spec.relax_collisions_per_particle = relax;
 }
 
 EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
@@ -118,7 +131,7 @@ EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {
   s.methods = {sim::Method::dsmc};
   s.modes = {sim::Randomization::none};
   s.seeds = seeds;
-  s.relax_collisions_per_particle = 0;
+  default_relaxation_for_methods(s);
   return s;
 }
 
@@ -132,11 +145,11 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         std::vector<const sim::RunResult*> group;
         std::vector<double> ratios;
         int failed_runs = 0;
-        std::vector<std::string> errors;
+        std::vector<RunNote> errors;  // a failed run's error names the run
         for (int i = 0; i < spec.seeds; ++i, ++k) {
           if (!runs.at(k).ok) {
             ++failed_runs;
-            errors.push_back(runs[k].error);
+            errors.push_back({runs[k].error, std::nullopt});
             continue;
           }
           // An elastic run without a collision measures no frequency (0 ± 0 from every seed
@@ -144,10 +157,10 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
           // its transient does.
           if (eps >= 1.0 && runs[k].result.collisions == 0) {
             ++failed_runs;
-            errors.push_back(fmt::format(
-                "seed {}: no collision by t_end = {}, so no collision frequency (lengthen the run, "
-                "--t-end-elastic)",
-                runs[k].result.parameters.seed, runs[k].result.parameters.t_end));
+            errors.push_back({fmt::format("no collision by t_end = {}, so no collision frequency "
+                                          "(lengthen the run, --t-end-elastic)",
+                                          runs[k].result.parameters.t_end),
+                              runs[k].result.parameters.seed});
             continue;
           }
           group.push_back(&runs[k].result);
@@ -176,7 +189,7 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
         r.method = kind.method;
         r.summary.mode = std::string(sim::to_string(kind.mode));
         r.summary.failed += failed_runs;
-        for (auto& e : errors) r.summary.messages.push_back(e);
+        for (auto& e : errors) r.summary.notes.push_back(std::move(e));
         points.push_back(std::move(r));
       }
   return points;

@@ -10,6 +10,7 @@
 #include "molchaos/validation/figure_data.hpp"
 #include "molchaos/validation/haff_estimators.hpp"
 #include "molchaos/validation/hcs_window.hpp"
+#include "molchaos/validation/run_notes.hpp"
 
 namespace molchaos::validation {
 
@@ -57,7 +58,7 @@ struct PointSummary {
   /// A of each fitted run by every estimator, in the order of k_haff_estimators (the
   /// estimator study compares their scatter on the same runs).
   std::vector<std::array<double, k_haff_estimators.size()>> A_by_estimator;
-  std::vector<std::string> messages;
+  std::vector<RunNote> notes;  ///< why runs gave no value (note_lines prints them grouped)
 };
 
 PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Usage: sweep_notes.sh MOLCHAOS
+# A reason shared by the runs of a state point (a run too short for its transient, an elastic run
+# without a collision) is one note naming how many runs, however many seeds the sweep has; two
+# points with two reasons give two notes.
+set -u
+bin=$(realpath "$1")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
+
+# Both points give no value (exit status 1: every run failed or could not be fitted).
+"$bin" sweep --particles 100 --restitution 0.9,1 --t-end-tau0 0.05 --t-end-elastic 0.001 \
+  --seeds 6 --cache '' --threads 1 --quiet >table.txt 2>notes.txt
+status=$?
+cat notes.txt
+[ "$status" -eq 1 ] || fail "expected exit status 1 (no run could be fitted), got $status"
+[ "$(grep -c 'note:' notes.txt)" -eq 2 ] || fail "expected 2 notes (one per reason)"
+grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): run ended before the transient' \
+  notes.txt || fail "the transient note does not name its 6 runs"
+grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): no collision by t_end = 0.001' \
+  notes.txt || fail "the elastic note does not name its 6 runs"
+# One seed: the note names it.
+"$bin" sweep --particles 100 --t-end-tau0 0.05 --seeds 1 --cache '' --threads 1 --quiet \
+  >/dev/null 2>one.txt
+grep -Eq '^  note: seed [0-9]+: run ended before the transient' one.txt || fail "one run's note"
+echo "ok: one note per reason, naming how many runs and which seeds"
