@@ -6,6 +6,7 @@
 //  --simulation  error of A for the molecular-chaos (flux) gas, where kinetic theory is exact,
 //                against CPU seconds, as N and the number of seeds vary.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -82,7 +83,8 @@ TheoryRow theory_row(int d, const theory::QuadratureOptions& q, std::string meth
 }
 
 void bench_theory(const BenchOptions& o) {
-  std::string csv = fmt::format("# molchaos bench --theory\n# version = {}\n", k_version);
+  std::string csv =
+      fmt::format("# molchaos bench --theory\n# version = {}\n# theory = true\n", k_version);
   csv +=
       "dimension,method,setting,cpu_seconds,max_error_reached,max_error_estimate,integrand_"
       "evaluations\n";
@@ -143,10 +145,12 @@ void bench_simulation(const BenchOptions& o) {
   // the same work (particle-runs) is spent; the scatter of A over the runs and the CPU seconds
   // per run give, for any target relative standard error r, the seeds and seconds needed,
   // (sd/r)^2 runs; the mean over the runs against theory bounds the finite-N bias.
+  // The options as "# key = value" lines: `bench --config` on this file repeats the measurement.
   std::string csv = fmt::format(
-      "# molchaos bench --simulation: flux gas, d = 2, n = 0.05, eps = 0.9, runs of 4 tau0\n"
-      "# version = {}\n# work = {} particle-runs per N (seeds = max({}, work / N))\n",
-      k_version, o.work, k_min_seeds);
+      "# molchaos bench --simulation: flux gas, d = 2, n = 0.05, eps = 0.9, runs of 4 tau0; "
+      "work in particle-runs per N, seeds max({}, work / N)\n"
+      "# version = {}\n# simulation = true\n# particles = {}\n# work = {}\n# threads = {}\n",
+      k_min_seeds, k_version, fmt::join(o.particles, " "), o.work, o.threads);
   csv +=
       "particles,seeds,cpu_seconds_per_run,A,A_err,A_theory,relative_bias,relative_bias_error,"
       "relative_sd_per_run,cpu_seconds_for_0.5pc,seeds_for_0.5pc,cpu_seconds_for_0.1pc,seeds_for_"

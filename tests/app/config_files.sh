@@ -73,6 +73,12 @@ printf 'simulation = true\nparticles = [100]\nwork = 1000\nthreads = 1\nout = "b
 grep -q '^100,10,' bench/work_precision_simulation.csv || fail "bench did not take N and work from the file"
 "$bin" bench --config bench.toml --work 2000 --out bench2 >/dev/null 2>&1 || fail "bench with flags over the file"
 grep -q '^100,20,' bench2/work_precision_simulation.csv || fail "bench flags do not override the file"
+"$bin" bench --config bench2/work_precision_simulation.csv --out bench3 >/dev/null 2>&1 ||
+  fail "bench from its own result file"
+# The same N, seeds, A and error (the CPU seconds differ from run to run).
+cut -d, -f1,2,4,5 bench2/work_precision_simulation.csv | grep -v '^#' >bench2.rows
+cut -d, -f1,2,4,5 bench3/work_precision_simulation.csv | grep -v '^#' >bench3.rows
+cmp -s bench2.rows bench3.rows || fail "bench --config on its result file does not repeat the measurement"
 echo "ok: sweep, theory and bench read their options from files; a sweep repeats from its summary"
 
 failures=0
