@@ -15,7 +15,7 @@ status=$?
 cat notes.txt
 [ "$status" -eq 1 ] || fail "expected exit status 1 (no run could be fitted), got $status"
 [ "$(grep -c 'note:' notes.txt)" -eq 2 ] || fail "expected 2 notes (one per reason)"
-grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): run ended before the transient' \
+grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): run ended before the transient \(3 collisions per particle\)' \
   notes.txt || fail "the transient note does not name its 6 runs"
 grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): no collision by t_end = 0.001' \
   notes.txt || fail "the elastic note does not name its 6 runs"

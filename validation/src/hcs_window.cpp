@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "molchaos/sim/parameter_table.hpp"
+
 namespace molchaos::validation {
 
 double gamma_upper_tail(int terms, double y) {
@@ -20,7 +22,7 @@ double gamma_upper_tail(int terms, double y) {
 
 double gamma_upper_quantile(int terms, double probability) {
   if (!(probability > 0.0 && probability < 1.0))
-    throw std::invalid_argument("probability: value " + std::to_string(probability) +
+    throw std::invalid_argument("probability: value " + sim::message_number(probability) +
                                 " is outside the allowed range (0, 1)");
   // The tail falls monotonically from 1 at y = 0; bracket, then bisect.
   double lo = 0.0, hi = 1.0;
@@ -83,7 +85,7 @@ FitWindow choose_window(const std::vector<sim::Sample>& samples, std::int64_t pa
     }
   if (!found) {
     w.message = "run ended before the transient (" +
-                std::to_string(rule.start_collisions_per_particle) + " collisions per particle)";
+                sim::message_number(rule.start_collisions_per_particle) + " collisions per particle)";
     return w;
   }
   w.breakdown = detect_breakdown(samples, rule);
