@@ -105,6 +105,8 @@ void run_sweep_command(SweepCliOptions& o) {
                       : "  (no error bar: fewer than 2 runs)");
     print_notes(s);
   }
+  for (const auto& note : validation::extrapolated_theory_notes(o.spec))
+    std::cerr << "note: " << note << '\n';
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);

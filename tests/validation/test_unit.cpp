@@ -53,6 +53,20 @@ BOOST_AUTO_TEST_CASE(sim_and_theory_share_g2_and_enskog_frequency) {
     }
 }
 
+// A sweep beyond the equilibrium fluid compares with a theory whose g2 is extrapolated: its summary
+// says so, once per such density (disks: packing 0.7 at n = 0.891; n = 0.9 is beyond, 0.88 not).
+BOOST_AUTO_TEST_CASE(sweep_notes_the_densities_where_theory_extrapolates) {
+  EnsembleSpec spec;
+  spec.dimension = 2;
+  spec.densities = {0.05, 0.88, 0.9, 1.0};
+  const auto notes = extrapolated_theory_notes(spec);
+  BOOST_TEST_REQUIRE(notes.size() == 2u);
+  BOOST_TEST(notes[0].starts_with("A_theory at density 0.9 (packing fraction 0.7069)"));
+  BOOST_TEST(notes[1].starts_with("A_theory at density 1 "));
+  spec.densities = {0.05, 0.1};
+  BOOST_TEST(extrapolated_theory_notes(spec).empty());
+}
+
 BOOST_AUTO_TEST_CASE(haff_fit_recovers_exact_parameters) {
   const auto samples = haff_samples(0.97, 123.4, 1000.0, 60);
   const HaffFit f = fit_haff(samples, 1.0, 1000.0);

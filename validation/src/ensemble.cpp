@@ -15,7 +15,9 @@
 
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/theory/contact_value.hpp"
 #include "molchaos/theory/cooling.hpp"
+#include "molchaos/theory/dimension.hpp"
 
 namespace molchaos::validation {
 
@@ -195,6 +197,20 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
   return points;
 }
 
+std::vector<std::string> extrapolated_theory_notes(const EnsembleSpec& spec) {
+  std::vector<std::string> notes;
+  for (double n : spec.densities) {
+    const double eta = theory::packing_fraction(spec.dimension, n);
+    if (theory::g2_extrapolated(spec.dimension, eta))
+      notes.push_back(fmt::format(
+          "A_theory at density {} (packing fraction {:.4g}) extrapolates g2(σ) beyond the "
+          "equilibrium fluid, which ends at packing {} for {}",
+          n, eta, theory::fluid_limit_packing(spec.dimension),
+          spec.dimension == 2 ? "disks" : "spheres"));
+  }
+  return notes;
+}
+
 void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& points,
                        const std::string& version, const std::string& path) {
   sim::write_file_atomically(path, [&](std::ostream& out) {
@@ -221,6 +237,7 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
            "succeeded (runs = 0, failed = their number); their errors are nan where fewer than 2 "
            "runs succeeded (no standard error)\n";
+    for (const auto& note : extrapolated_theory_notes(s)) out << "# note: " << note << "\n";
     out << "density,restitution,method,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
            "collision_ratio,collision_ratio_err\n";

@@ -82,6 +82,10 @@ struct PointResult {
 std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<RunOutcome>& runs,
                                    const WindowRule& rule);
 
+/// One line per density of the spec at which kinetic theory's A_theory extrapolates g2(σ) beyond
+/// the equilibrium fluid (theory::g2_extrapolated); empty when every density is a fluid's.
+std::vector<std::string> extrapolated_theory_notes(const EnsembleSpec& spec);
+
 /// Summary table as CSV (header lines with the spec and version, then one row per point) to a
 /// temporary file renamed to path.
 void write_summary_csv(const EnsembleSpec& spec, const std::vector<PointResult>& points,
