@@ -1,7 +1,8 @@
 """Fig. 4 of the paper from the table `molchaos reproduce` writes: the cooling amplitude A(eps)
 measured (with its standard error) beside the kinetic theory, one curve per randomization mode.
 
-    python3 examples/fig4_from_csv.py results/fig4_A_of_eps.csv fig4.png
+    PYTHONPATH=build/python /usr/bin/python3 examples/fig4_from_csv.py results/fig4_A_of_eps.csv \
+        fig4.png
 """
 
 import sys

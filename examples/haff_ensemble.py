@@ -1,7 +1,7 @@
-"""A small ensemble of cooling runs from Python and Haff's law T(t) = 1/(1 + t/tau0)^2 fitted to
-its mean temperature with scipy, beside the kinetic theory's tau0.
+"""A small ensemble of cooling runs from Python, Haff's law T(t) = 1/(1 + t/tau0)^2 fitted to each
+run's temperature with scipy, and the runs' mean tau0 beside the kinetic theory's.
 
-    python3 examples/haff_ensemble.py [runs]
+    PYTHONPATH=build/python /usr/bin/python3 examples/haff_ensemble.py [runs]
 
 runs: a whole number >= 2 (default 4): the error bar of tau0 is the spread between runs.
 """
@@ -59,7 +59,8 @@ def runs_argument(text):
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    # The docstring's first paragraph (its opening sentence spans two lines).
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("runs", nargs="?", type=runs_argument, default=4,
                         help=f"independent runs, {RUNS_RULE}; default 4")
     main(parser.parse_args().runs)

@@ -34,7 +34,7 @@ void validate_dsmc(const Parameters& p) {
         " is not allowed with method = dsmc (a shuffle only permutes velocities, which leaves the "
         "DSMC state unchanged); allowed value none");
   if (p.tc != 0)
-    throw std::invalid_argument("tc: value " + std::to_string(p.tc) +
+    throw std::invalid_argument("tc: value " + message_number(p.tc) +
                                 " is not allowed with method = dsmc; allowed value 0");
   // A relaxation written in the header that did not happen would be a false record of the run.
   if (p.relax_collisions_per_particle != 0)

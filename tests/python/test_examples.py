@@ -51,3 +51,11 @@ def test_fig4_from_reproduce_quick(molchaos_bin, tmp_path):
     assert len(table) > 0 and {"A", "A_err", "A_theory"} <= set(table.columns)
     assert png.stat().st_size > 10000
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_haff_ensemble_help_states_its_whole_purpose():
+    # Was: the description stopped mid-sentence ("... fitted to"), the docstring's first line.
+    out = subprocess.run([sys.executable, os.path.join(EXAMPLES, "haff_ensemble.py"), "--help"],
+                         capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0
+    assert "the runs' mean tau0 beside the kinetic theory's." in " ".join(out.stdout.split())

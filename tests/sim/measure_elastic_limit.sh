@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Elastic-limit check of every randomization mode (issue 3): at restitution 1 the gas is in
+# Elastic-limit check of every randomization mode: at restitution 1 the gas is in
 # equilibrium, so its collision frequency per particle, omega = 2 C / (N t), must equal Enskog's,
 # 2 n g2 sqrt(pi T) (d = 2, Henderson g2) or 4 n g2 sqrt(pi T) (d = 3, Carnahan-Starling g2), T = 1.
 # Runs `molchaos simulate` for independent seeds and prints omega/omega_E with its standard error.

@@ -33,7 +33,7 @@ void conserve(double density) {
 BOOST_AUTO_TEST_CASE(elastic_2d_1e6_collisions) { conserve<2>(0.05); }
 BOOST_AUTO_TEST_CASE(elastic_3d_1e6_collisions) { conserve<3>(0.4 * 6 / 3.141592653589793); }
 
-// Extremes (issue 5). N = 10^6 disks: the engine builds, relaxes and runs 10^6 elastic collisions
+// Extremes. N = 10^6 disks: the engine builds, relaxes and runs 10^6 elastic collisions
 // with every invariant, in under 300 bytes per particle.
 BOOST_AUTO_TEST_CASE(one_million_disks) {
   Parameters p;

@@ -1,4 +1,4 @@
-// Numerical stress (issue 5), fast cases (label invariant; the long ones are in test_slow.cpp).
+// Numerical stress, fast cases (label invariant; the long ones are in test_slow.cpp).
 // Each case prints what it found (run with --log_level=message to see it):
 //  - inelastic collapse, eps = 0.1, 0.3, 0.5 at n = 0.1, 0.3, 0.5 in 2D: without the TC model the
 //    run ends in bounded time with a stated reason and never overlaps; with it, it reaches t_end
