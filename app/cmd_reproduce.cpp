@@ -134,7 +134,7 @@ void add_reproduce_command(CLI::App& app) {
       app.add_subcommand("reproduce", "Regenerate the paper's figures, REPORT.md and tables");
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
   cmd->add_option("--cache", o->cache, "run cache (default <out>/cache)")->check(path_name());
-  cmd->add_flag("--quick", o->quick, "one-minute first look (N = 1000, 3 restitutions, 3 seeds)");
+  cmd->add_flag("--quick", o->quick, "a first look in seconds (N = 1000, 3 restitutions, 3 seeds)");
   cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
       ->check(integer_in(1, 10000));
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
