@@ -277,6 +277,15 @@ BOOST_AUTO_TEST_CASE(b_renders_png_pdf_and_script) {
   check_rendered(fig::render_b(synthetic_b(), out.options()), out.path, "fig_b_of_eps");
 }
 
+// One run per point gives no b at contact (it needs the standard error of the mean dyad): the
+// empty series is left out and the rest is drawn.
+BOOST_AUTO_TEST_CASE(b_renders_without_an_empty_series) {
+  const OutputDirectory out("b_empty_series");
+  auto b = synthetic_b();
+  b.panels[0].series[2] = {b.panels[0].series[2].label, {}, {}};
+  check_rendered(fig::render_b(b, out.options()), out.path, "fig_b_of_eps");
+}
+
 BOOST_AUTO_TEST_CASE(a2_renders_png_pdf_and_script) {
   const OutputDirectory out("a2");
   check_rendered(fig::render_a2(synthetic_a2(), out.options()), out.path, "fig_a2_of_eps");
@@ -368,6 +377,10 @@ BOOST_AUTO_TEST_CASE(bad_data_throws_invalid_argument_naming_the_field) {
   auto b = synthetic_b();
   b.panels[0].series[2].b.pop_back();
   check_invalid_argument([&] { fig::render_b(b, out.options()); }, "BData.panels[0].series[2].b");
+  b = synthetic_b();
+  for (auto& series : b.panels[0].series) series = {series.label, {}, {}};
+  check_invalid_argument([&] { fig::render_b(b, out.options()); },
+                         "BData.panels[0].series[*].restitution");
 
   auto a2 = synthetic_a2();
   a2.panels[1].series[3].a2.pop_back();
