@@ -9,6 +9,7 @@
 // Without valgrind the toggles do nothing and the program just runs the cases.
 #include <cstdint>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <type_traits>
 
@@ -53,6 +54,10 @@ void run(const Parameters& p, std::uint64_t collisions, bool series = false) {
   if (series) std::fprintf(stderr, "sum of samples %g\n", sum);
 }
 
+// The bm_disks cases at n = 0.05 by name: N from 1e3 to 1e6.
+const std::map<std::string, std::int32_t> k_disks = {
+    {"disks1e3", 1000}, {"disks1e4", 10000}, {"disks1e5", 100000}, {"disks1e6", 1000000}};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,11 +72,8 @@ int main(int argc, char** argv) {
       run<2>(p, 200000, true);
     else
       run<2, molchaos::sim::ContactStatistics>(p, 200000, true);
-  } else if (which.size() == 8 && which.starts_with("disks1e") && which[7] >= '3' &&
-             which[7] <= '6') {  // bm_disks at n = 0.05
-    std::int32_t n = 1;
-    for (char k = '0'; k < which[7]; ++k) n *= 10;
-    run<2>(molchaos::bench::disks_case(n, 0.05), 200000);
+  } else if (const auto disks = k_disks.find(which); disks != k_disks.end()) {  // bm_disks
+    run<2>(molchaos::bench::disks_case(disks->second, 0.05), 200000);
   } else if (which == "spheres10" || which == "spheres40") {  // bm_spheres
     run<3>(molchaos::bench::spheres_case(which == "spheres10" ? 0.1 : 0.4), 500000);
   } else {

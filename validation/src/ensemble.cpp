@@ -117,15 +117,8 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
 }
 
 void default_relaxation_for_methods(EnsembleSpec& spec) {
-  double relax = 0.0;
-  for (const sim::Method method : spec.methods) {
-    sim::Parameters run;
-    run.method = method;
-    run.relax_collisions_per_particle = spec.relax_collisions_per_particle;
-    sim::default_relaxation_for_method(run);
-    relax = std::max(relax, run.relax_collisions_per_particle);
-  }
-  spec.relax_collisions_per_particle = relax;
+  if (std::none_of(spec.methods.begin(), spec.methods.end(), sim::method_relaxes))
+    spec.relax_collisions_per_particle = 0.0;
 }
 
 EnsembleSpec dsmc_twin(const EnsembleSpec& md, int seeds) {

@@ -62,9 +62,9 @@ double theory_tau0(int dimension, double density, double restitution);
 /// modes and restitutions at one density start from the same relaxed configurations).
 std::vector<sim::Parameters> expand(const EnsembleSpec& spec);
 
-/// The relaxation of a spec whose relax_collisions_per_particle was not given, from the one rule
-/// of sim::default_relaxation_for_method: the spec's relaxation is that of its runs that relax,
-/// so it is kept while a listed method relaxes and is 0 when none does.
+/// The relaxation of a spec whose relax_collisions_per_particle was not given, by the rule of
+/// sim::default_relaxation_for_method (sim::method_relaxes): the spec's relaxation is that of its
+/// runs that relax, so it is kept while a listed method relaxes and is 0 when none does.
 void default_relaxation_for_methods(EnsembleSpec& spec);
 
 /// The DSMC twin of an MD ensemble: the same state points, `seeds` seeds, mode none (the method's
