@@ -311,9 +311,8 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
 // also asks the run to stop (CheckpointOptions::interrupt): it stops at its next sample time or
 // progress pause (at most 2^20 events, the relaxation's included), writes its checkpoint if it
 // has a path and the relaxation is done (a half-relaxed state has none), and KeyboardInterrupt
-// is raised. Signals with other Python handlers (a SIGINT or
-// SIGTERM handler of the caller's, an alarm) are run in the progress pauses, and stop the run
-// when they raise.
+// is raised. Signals with other Python handlers (a SIGINT or SIGTERM handler of the caller's, an
+// alarm) are run in the progress pauses, and stop the run when they raise.
 std::atomic<bool> g_interrupt_requested{false};
 struct sigaction g_python_sigint {};
 
