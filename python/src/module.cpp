@@ -126,14 +126,15 @@ std::string path_keyword(const std::string& name, py::handle value) {
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
 py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
                            py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg) {
-  const int dim = keyword_as<int>("dim", dim_arg, "{2, 3}");
+  const std::string dims = "{2, 3}";
+  const int dim = keyword_as<int>("dim", dim_arg, dims);
   const double restitution = keyword_as<double>("restitution", restitution_arg);
   const double density = keyword_as<double>("density", density_arg);
   const double b = keyword_as<double>("b", b_arg);
   const std::string quadrature = keyword_as<std::string>("quadrature", quadrature_arg);
   if (dim != 2 && dim != 3)
-    throw py::value_error("dim: value " + std::to_string(dim) +
-                          " is outside the allowed range {2, 3}");
+    throw py::value_error("dim: value " + std::to_string(dim) + " is outside the allowed range " +
+                          dims);
   if (quadrature != "gauss" && quadrature != "adaptive")
     throw py::value_error("quadrature: must be one of {gauss, adaptive}, got " +
                           repr_text(quadrature_arg));
