@@ -140,9 +140,10 @@ std::string setup_section(const ReproduceResults& r, const std::string& command)
        "its quadrature error estimate.\n\n";
   s += fmt::format(
       "d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density; a point and mode "
-      "whose A had a relative standard error above {:.2f} % got more seeds, in stages, see the "
-      "runs column: the largest left is {:.3f} %), runs of {} kinetic-theory τ0; A from the "
+      "(the same {} relaxed initial states for every ε and mode at one density), then, in stages, "
+      "the seeds a relative standard error of A of {:.2f} % needs at the scatter per run of a "
+      "smooth model of each gas over ε, and more where a point's own error was still above it "
+      "(the runs column; the largest left is {:.3f} %), runs of {} kinetic-theory τ0; A from the "
       "integrated form of Haff's law over each run's window (the estimator finding below). "
       "Modes: `none` (original gas), `paper` (the paper's shuffle), `flux` (flux-weighted "
       "shuffle).\n\n",

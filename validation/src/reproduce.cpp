@@ -15,9 +15,12 @@
 #include "molchaos/validation/reproduce.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "molchaos/theory/paper_checks.hpp"
+#include "molchaos/validation/seed_sizing.hpp"
 #include "reproduce_steps.hpp"
 
 namespace molchaos::validation {
@@ -117,38 +120,45 @@ void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcome
     }
 }
 
-// Further stages: a (state point, mode) whose A has a relative standard error above the target
-// gets more seeds, sized from the scatter so far: n_needed = n·(SE/target)² with 10 % margin,
-// at most k_seed_growth times the runs so far (a scatter from few runs is itself uncertain by
-// ~1/√(2n): growing in steps keeps a low first estimate from costing a large overshoot) and at
-// most max_seeds. Seeds 0..n−1 come from the cache; up to k_seed_stages stages are run. Modes are
-// sized apart: A of two modes started from the same relaxed state correlate weakly over seeds
-// (r ≈ 0.2 for the original and the flux gas, measured in the precision finding), so pairing
-// would shrink the variance of their difference by that fraction at most, while equal seeds
-// would give every mode the seeds of its noisiest one. Returns whether any point got seeds.
+// Further stages: each (state point, mode) gets the seeds its target relative SE of A needs at
+// its gas's modelled scatter per run, and more where its own SE is still above the target
+// (seed_sizing.hpp: sizing a point from its own scatter alone leaves the points whose first runs
+// scattered little with too small an error bar). Seeds 0..n−1 come from the cache; up to
+// k_seed_stages stages are run. Modes are sized apart: A of two modes started from the same
+// relaxed state correlate weakly over seeds (r ≈ 0.2 for the original and the flux gas, measured
+// in the precision finding), so pairing would shrink the variance of their difference by that
+// fraction at most, while equal seeds would give every mode the seeds of its noisiest one.
+// Returns whether any point got seeds.
 constexpr int k_seed_stages = 4;
-constexpr int k_seed_growth = 4;
 
 bool add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
                             const SweepOptions& sweep) {
   if (cfg.target_relative_error <= 0.0) return false;
+  SeedSizing sizing;
+  sizing.target_relative_error = cfg.target_relative_error;
+  sizing.max_seeds = cfg.max_seeds;
+  // A gas: one mode at one density; its points differ in restitution.
+  std::map<std::pair<double, std::string>, std::vector<const PointSummary*>> gases;
+  for (const auto& p : R.fig4_points)
+    gases[{p.summary.density, p.summary.mode}].push_back(&p.summary);
   std::vector<EnsembleSpec> specs;
-  for (const auto& p : R.fig4_points) {
-    const auto& s = p.summary;
-    if (s.runs < 2 || s.A.value <= 0.0) continue;
-    const double rel = s.A.error / s.A.value;
-    if (rel <= cfg.target_relative_error) continue;
-    const double ratio = rel / cfg.target_relative_error;
-    const int seeds = s.runs + s.failed;
-    const int needed = std::min({cfg.max_seeds, k_seed_growth * seeds,
-                                 static_cast<int>(std::ceil(1.1 * seeds * ratio * ratio))});
-    if (needed <= seeds) continue;
-    EnsembleSpec spec = R.fig4_spec;
-    spec.densities = {s.density};
-    spec.restitutions = {s.restitution};
-    spec.modes = {*sim::parse_randomization(s.mode)};
-    spec.seeds = needed;
-    specs.push_back(spec);
+  for (const auto& [gas, points] : gases) {
+    std::vector<PointScatter> scatter;
+    for (const auto* s : points) {
+      const bool usable = s->runs >= 2 && s->A.value > 0.0;
+      scatter.push_back({s->restitution, s->runs + s->failed, usable ? s->runs : 0,
+                         usable ? s->A.error * std::sqrt(s->runs) / s->A.value : 0.0});
+    }
+    const std::vector<int> needed = seeds_needed(scatter, sizing);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (needed[k] <= scatter[k].seeds) continue;
+      EnsembleSpec spec = R.fig4_spec;
+      spec.densities = {points[k]->density};
+      spec.restitutions = {points[k]->restitution};
+      spec.modes = {*sim::parse_randomization(points[k]->mode)};
+      spec.seeds = needed[k];
+      specs.push_back(spec);
+    }
   }
   if (specs.empty()) return false;
   std::vector<sim::Parameters> runs;
