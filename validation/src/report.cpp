@@ -41,8 +41,10 @@ std::string header_lines(const ReproduceResults& r) {
       "{}\n",
       c.window.start_collisions_per_particle, c.window.density_mode_threshold,
       c.window.velocity_mode_threshold);
-  s += fmt::format("# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none)\n",
-                   r.dsmc_spec.seeds);
+  s += fmt::format(
+      "# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none; the first stage, as "
+      "seeds)\n",
+      r.dsmc_spec.seeds);
   return s;
 }
 
