@@ -49,24 +49,23 @@ Claim finding_estimator_precision(const ReproduceResults& R) {
           fmt::format("the integrated form of Haff's law estimates A with less scatter than the "
                       "least-squares fit of T(t), without a shift in a gas that obeys Haff's law "
                       "(the estimator of every A here)"),
-          "beyond the paper",
-          "",
-          {}};
+          "beyond the paper", "", {}};
   std::string deciding;
   for (const auto& gas : gases(R)) {
     for (const auto& s : compare_estimator_scatter(gas.points)) {
-      ComparisonRow row{
-          fmt::format("{} gas, {}: relative sd of A per run, %", gas.label, to_string(s.estimator)),
-          std::nullopt,
-          Measurement{100.0 * s.relative_sd_per_run, 0.0},
-          std::nullopt,
-          std::nullopt,
-          "information",
-          k_information_rule,
-          fmt::format("runs for a given precision ×{:.3f} of the fit's; shift from "
-                      "the fit {:+.4f} ± {:.4f} % ({} dof)",
-                      s.cost_ratio, 100.0 * s.shift_from_least_squares.value,
-                      100.0 * s.shift_from_least_squares.error, s.degrees_of_freedom)};
+      ComparisonRow row{fmt::format("{} gas, {}: relative sd of A per run, %", gas.label,
+                                    to_string(s.estimator)),
+                        std::nullopt,
+                        Measurement{100.0 * s.relative_sd_per_run, 0.0},
+                        std::nullopt,
+                        std::nullopt,
+                        "information",
+                        k_information_rule,
+                        fmt::format("runs for a given precision ×{:.3f} of the fit's; shift from "
+                                    "the fit {:+.4f} ± {:.4f} % ({} dof)",
+                                    s.cost_ratio, 100.0 * s.shift_from_least_squares.value,
+                                    100.0 * s.shift_from_least_squares.error,
+                                    s.degrees_of_freedom)};
       c.rows.push_back(std::move(row));
       if (s.estimator == k_haff_estimator)
         deciding += fmt::format("{}{}: cost ×{:.2f}, shift {:+.3f} ± {:.3f} %",
@@ -78,14 +77,13 @@ Claim finding_estimator_precision(const ReproduceResults& R) {
   const auto all = gases(R);
   const Measurement none_flux = seed_correlation(all[0].points, all[2].points);
   const Measurement paper_flux = seed_correlation(all[1].points, all[2].points);
-  c.deciding = fmt::format(
-      "{} against the least-squares fit on the same runs; largest SE(A)/A "
-      "of a Fig. 4 point {:.3f} %; A of two gases from the same relaxed "
-      "states correlate over seeds by r = {:+.3f} ± {:.3f} (none, flux) and "
-      "{:+.3f} ± {:.3f} (paper, flux): pairing would shrink the variance of "
-      "a difference by the fraction r at most, so the gases get seeds apart",
-      deciding, 100.0 * largest_relative_error_of_A(R), none_flux.value, none_flux.error,
-      paper_flux.value, paper_flux.error);
+  c.deciding = fmt::format("{} against the least-squares fit on the same runs; largest SE(A)/A "
+                           "of a Fig. 4 point {:.3f} %; A of two gases from the same relaxed "
+                           "states correlate over seeds by r = {:+.3f} ± {:.3f} (none, flux) and "
+                           "{:+.3f} ± {:.3f} (paper, flux): pairing would shrink the variance of "
+                           "a difference by the fraction r at most, so the gases get seeds apart",
+                           deciding, 100.0 * largest_relative_error_of_A(R), none_flux.value,
+                           none_flux.error, paper_flux.value, paper_flux.error);
   return c;
 }
 

@@ -67,7 +67,7 @@ Claim finding_breakdown_prediction(const ReproduceResults& results);
 Claim finding_breakdown_prediction_3d(const ReproduceResults& results);
 
 // --- the precision of the Fig. 4 ensembles (reproduce_precision.cpp) ---------------------------
-/// Largest SE(A)/A over the Fig. 4 points with at least two runs.
+/// Largest SE(A)/A over the Fig. 4 points (MD and DSMC) with at least two runs.
 double largest_relative_error_of_A(const ReproduceResults& results);
 Claim finding_estimator_precision(const ReproduceResults& results);
 
