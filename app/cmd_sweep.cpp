@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
@@ -13,6 +14,7 @@
 #include "config_file.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/staged_ensemble.hpp"
 #include "molchaos/version.hpp"
 #include "parameter_options.hpp"
 #include "sweep_runner.hpp"
@@ -29,7 +31,12 @@ struct SweepCliOptions {
   int threads = 0;
   bool quiet = false;
   bool relax_given = false;  // --relax on the command line or in the --config file
+  bool max_seeds_given = false;
 };
+
+// Stages of further seeds reach a target error (validation/staged_ensemble.hpp); each stage reads
+// the seeds before it back from the cache.
+constexpr int k_target_stages = 4;
 
 // Why runs of a point gave no value, one line per reason: many seeds that share a reason say it
 // once.
@@ -58,6 +65,18 @@ void run_sweep_command(SweepCliOptions& o) {
       throw UsageError("--density",
                        fmt::format("value {} is at or above close packing {:.6f} for --dim {}", n,
                                    sim::close_packing_density(o.spec.dimension), o.spec.dimension));
+  if (o.max_seeds_given && o.spec.target_relative_error <= 0.0)
+    throw UsageError("--max-seeds",
+                     "only with --target-error (it bounds the seeds added to reach it)");
+  if (o.spec.target_relative_error > 0.0) {
+    if (o.cache.empty())
+      throw UsageError("--target-error",
+                       "needs a cache (each stage reads the runs before it back from it); give "
+                       "--cache DIR");
+    if (o.spec.max_seeds < o.spec.seeds)
+      throw UsageError("--max-seeds",
+                       fmt::format("value {} is below --seeds {}", o.spec.max_seeds, o.spec.seeds));
+  }
   if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
   if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   try {
@@ -73,7 +92,15 @@ void run_sweep_command(SweepCliOptions& o) {
   so.runner = default_sweep_runner();
   const auto runs = validation::expand(o.spec);
   const auto outcomes = validation::run_sweep(runs, so);
-  const auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});
+  auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});
+  if (o.spec.target_relative_error > 0.0) {
+    validation::SeedSizing sizing;
+    sizing.target_relative_error = o.spec.target_relative_error;
+    sizing.max_seeds = o.spec.max_seeds;
+    // Failed runs are counted per point by the summaries below.
+    validation::grow_to_target({{&points, &o.spec}}, sizing, k_target_stages, so,
+                               validation::WindowRule{});
+  }
   std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>5}\n", "density",
                            "eps", "method", "mode", "A", "A_err", "A_theory", "diff/SE", "runs");
   int failed = 0;
@@ -107,6 +134,18 @@ void run_sweep_command(SweepCliOptions& o) {
   }
   for (const auto& note : validation::extrapolated_theory_notes(o.spec))
     std::cerr << "note: " << note << '\n';
+  if (o.spec.target_relative_error > 0.0) {
+    int above = 0;
+    for (const auto& p : points)
+      if (p.summary.restitution < 1.0 && p.summary.runs >= 2 &&
+          p.summary.A.error > o.spec.target_relative_error * std::abs(p.summary.A.value))
+        ++above;
+    if (above > 0)
+      std::cerr << fmt::format(
+          "note: SE(A)/A is above --target-error {} at {} point(s): --max-seeds {} or the {} "
+          "stages were reached\n",
+          o.spec.target_relative_error, above, o.spec.max_seeds, k_target_stages);
+  }
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -138,6 +177,15 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
       ->check(integer_in(1, 100000))
       ->capture_default_str();
+  cmd->add_option("--target-error", o->spec.target_relative_error,
+                  "more seeds, in stages, until SE(A)/A is at most this at every point "
+                  "(relative; needs --cache)")
+      ->check(real_in(0.0, false, 1.0, false));
+  CLI::Option* max_seeds = cmd->add_option("--max-seeds", o->spec.max_seeds,
+                                           "at most this many seeds per point "
+                                           "with --target-error")
+                               ->check(integer_in(1, 100000))
+                               ->capture_default_str();
   cmd->add_option("--base-seed", o->spec.base_seed, "base seed; run i uses a hash of (base, i)")
       ->check(unsigned_integer())
       ->capture_default_str();
@@ -156,8 +204,9 @@ void add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV")->check(path_name());
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
-  set_callback_with_config(cmd, [o, relax] {
+  set_callback_with_config(cmd, [o, relax, max_seeds] {
     o->relax_given = relax->count() > 0;
+    o->max_seeds_given = max_seeds->count() > 0;
     run_sweep_command(*o);
   });
 }

@@ -214,6 +214,9 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
                        s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
+    if (s.target_relative_error > 0.0)  // `seeds` was the first stage; the runs column says more
+      out << fmt::format("# target_error = {}\n# max_seeds = {}\n", s.target_relative_error,
+                         s.max_seeds);
     // The state points and modes as listed, so that `sweep --config summary.csv` repeats the
     // sweep; lists space separated, as --config reads them.
     std::vector<std::string> modes;

@@ -15,12 +15,10 @@
 #include "molchaos/validation/reproduce.hpp"
 
 #include <chrono>
-#include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include "molchaos/theory/paper_checks.hpp"
-#include "molchaos/validation/seed_sizing.hpp"
+#include "molchaos/validation/staged_ensemble.hpp"
 #include "reproduce_steps.hpp"
 
 namespace molchaos::validation {
@@ -121,88 +119,13 @@ void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcome
 }
 
 // Further stages: each (state point, mode) of Fig. 4, MD and DSMC, gets the seeds its target
-// relative SE of A needs at its gas's modelled scatter per run, and more where its own SE is still
-// above the target (seed_sizing.hpp: sizing a point from its own scatter alone leaves the points
-// whose first runs scattered little with too small an error bar). Seeds 0..n−1 come from the
-// cache; up to k_seed_stages stages are run. Modes are sized apart: A of two modes started from the
-// same relaxed state correlate weakly over seeds (r ≈ 0.2 for the original and the flux gas,
-// measured in the precision finding), so pairing would shrink the variance of their difference by
-// that fraction at most, while equal seeds would give every mode the seeds of its noisiest one.
+// relative SE of A needs (staged_ensemble.hpp; seed_sizing.hpp for why a point is not sized from
+// its own scatter alone). Seeds 0..n−1 come from the cache. Modes are sized apart: A of two modes
+// started from the same relaxed state correlate weakly over seeds (r ≈ 0.2 for the original and
+// the flux gas, measured in the precision finding), so pairing would shrink the variance of their
+// difference by that fraction at most, while equal seeds would give every mode the seeds of its
+// noisiest one.
 constexpr int k_seed_stages = 4;
-
-// The ensembles of the points of one list that need more seeds (a gas: one method and mode at
-// one density; its points differ in restitution).
-std::vector<EnsembleSpec> ensembles_needing_seeds(const std::vector<PointResult>& points,
-                                                  const EnsembleSpec& ensemble,
-                                                  const SeedSizing& sizing) {
-  std::map<std::pair<double, std::string>, std::vector<const PointSummary*>> gases;
-  for (const auto& p : points) gases[{p.summary.density, p.summary.mode}].push_back(&p.summary);
-  std::vector<EnsembleSpec> specs;
-  for (const auto& [gas, members] : gases) {
-    std::vector<PointScatter> scatter;
-    for (const auto* s : members) {
-      const bool usable = s->runs >= 2 && s->A.value > 0.0;
-      scatter.push_back({s->restitution, s->runs + s->failed, usable ? s->runs : 0,
-                         usable ? s->A.error * std::sqrt(s->runs) / s->A.value : 0.0});
-    }
-    const std::vector<int> needed = seeds_needed(scatter, sizing);
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      if (needed[k] <= scatter[k].seeds) continue;
-      EnsembleSpec spec = ensemble;
-      spec.densities = {members[k]->density};
-      spec.restitutions = {members[k]->restitution};
-      spec.modes = {*sim::parse_randomization(members[k]->mode)};
-      spec.seeds = needed[k];
-      specs.push_back(spec);
-    }
-  }
-  return specs;
-}
-
-// One stage for the MD and the DSMC points of Fig. 4 (one sweep). Returns whether any point got
-// seeds.
-bool add_seeds_where_needed(ReproduceResults& R, const ReproduceConfig& cfg,
-                            const SweepOptions& sweep) {
-  if (cfg.target_relative_error <= 0.0) return false;
-  SeedSizing sizing;
-  sizing.target_relative_error = cfg.target_relative_error;
-  sizing.max_seeds = cfg.max_seeds;
-  struct Extension {
-    EnsembleSpec spec;
-    std::vector<PointResult>* points;
-  };
-  std::vector<Extension> extensions;
-  for (auto* list : {&R.fig4_points, &R.dsmc_points}) {
-    const EnsembleSpec& ensemble = list == &R.fig4_points ? R.fig4_spec : R.dsmc_spec;
-    for (auto& spec : ensembles_needing_seeds(*list, ensemble, sizing))
-      extensions.push_back({std::move(spec), list});
-  }
-  if (extensions.empty()) return false;
-  std::vector<sim::Parameters> runs;
-  for (const auto& x : extensions) {
-    const auto r = expand(x.spec);
-    runs.insert(runs.end(), r.begin(), r.end());
-  }
-  SweepOptions second = sweep;
-  second.label = sweep.label + ", more seeds where SE(A)/A is above the target";
-  const auto outcomes = run_sweep(runs, second);
-  std::size_t offset = 0;
-  for (const auto& x : extensions) {
-    const std::size_t count = expand(x.spec).size();
-    const std::vector<RunOutcome> part(
-        outcomes.begin() + static_cast<std::ptrdiff_t>(offset),
-        outcomes.begin() + static_cast<std::ptrdiff_t>(offset + count));
-    offset += count;
-    record_failures(R, part);
-    for (auto& fresh : summarize(x.spec, part, cfg.window))
-      for (auto& p : *x.points)
-        if (p.summary.density == fresh.summary.density &&
-            p.summary.restitution == fresh.summary.restitution &&
-            p.summary.mode == fresh.summary.mode)
-          p = std::move(fresh);
-  }
-  return true;
-}
 
 void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   EnsembleSpec base;
@@ -251,8 +174,12 @@ void run_ensembles(ReproduceResults& R, const ReproduceConfig& cfg, const SweepO
   const std::vector<RunOutcome> od(outcomes.begin() + n4 + n3 + ne, outcomes.end());
   R.fig4_points = summarize(R.fig4_spec, o4, cfg.window);
   R.dsmc_points = summarize(R.dsmc_spec, od, cfg.window);
-  for (int stage = 0; stage < k_seed_stages; ++stage)
-    if (!add_seeds_where_needed(R, cfg, sweep)) break;
+  SeedSizing sizing;
+  sizing.target_relative_error = cfg.target_relative_error;
+  sizing.max_seeds = cfg.max_seeds;
+  record_failures(
+      R, grow_to_target({{&R.fig4_points, &R.fig4_spec}, {&R.dsmc_points, &R.dsmc_spec}}, sizing,
+                        k_seed_stages, sweep, cfg.window));
   R.fig3_points = summarize(R.fig3_spec, R.fig3_runs, cfg.window);
   R.elastic_points = summarize(R.elastic_spec, oe, cfg.window);
   R.fig3_original = R.fig3_points.at(0);

@@ -33,6 +33,10 @@ struct EnsembleSpec {
   /// none, so it runs once per state point beside the MD's shuffles). Every method must run one
   /// listed mode at least, and every mode must be run by one listed method at least.
   std::vector<sim::Method> methods{sim::Method::edmd};
+  /// If > 0, the points get more seeds in stages until SE(A)/A is at most this at every one
+  /// (staged_ensemble.hpp), up to max_seeds each; `seeds` is then the first stage.
+  double target_relative_error = 0.0;
+  int max_seeds = 1000;
 };
 
 /// One kind of run at every state point: a method with a mode it runs.

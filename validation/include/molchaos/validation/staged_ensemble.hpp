@@ -1,0 +1,31 @@
+// Ensembles grown in stages until every state point's A has a target relative standard error:
+// how many seeds each point gets comes from seed_sizing.hpp, the runs go through the sweep runner
+// (threads or MPI) and the cache, from which the seeds of earlier stages are read back. Used by
+// `reproduce` for Fig. 4 and by `sweep --target-error`.
+#pragma once
+
+#include <vector>
+
+#include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/seed_sizing.hpp"
+#include "molchaos/validation/sweep.hpp"
+
+namespace molchaos::validation {
+
+/// One list of point results and the ensemble they were summarized from. A gas is one method and
+/// mode at one density; its points differ in restitution.
+struct StagedList {
+  std::vector<PointResult>* points;
+  const EnsembleSpec* spec;
+};
+
+/// Runs up to `stages` further stages over all lists (one sweep per stage), replacing each grown
+/// point's result by the summary of all its seeds; stops early when no point needs more seeds.
+/// Returns the outcomes of the runs that failed in these stages (the caller's record of failures).
+/// The seeds of earlier stages are only read back when `sweep` has a cache; without one they run
+/// again.
+std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
+                                       const SeedSizing& sizing, int stages,
+                                       const SweepOptions& sweep, const WindowRule& window);
+
+}  // namespace molchaos::validation
