@@ -161,6 +161,9 @@ BOOST_AUTO_TEST_CASE(seeds_needed_bounds) {
   BOOST_TEST(n[2] == 60);
   BOOST_TEST(n[3] == 90);  // 74 wanted: fewer than it has
   BOOST_TEST(n[4] == 6);
+  // Four runs that scatter little still get min_runs = 8: a scatter from 4 runs is no measure.
+  const std::vector<PointScatter> few{{0.80, 4, 4, sd(4) / 10}, {0.90, 4, 4, sd(4) / 10}};
+  for (const int k : seeds_needed(few, s)) BOOST_TEST(k == 8);
   // The own SE above the target where the model is not: topped up from its own scatter.
   const std::vector<PointScatter> outlier{
       {0.80, 20, 20, 0.004}, {0.85, 20, 20, 0.004}, {0.90, 20, 20, 0.012}, {0.95, 20, 20, 0.004}};

@@ -67,6 +67,7 @@ std::vector<int> seeds_needed(const std::vector<PointScatter>& gas, const SeedSi
     // Its own SE still above the target (a scatter the model does not follow): top it up.
     if (p.relative_sd / std::sqrt(static_cast<double>(p.runs)) > sizing.target_relative_error)
       runs = std::max(runs, runs_for(p.relative_sd));
+    runs = std::max(runs, sizing.min_runs);
     // Seeds that give no A (failed runs) at the rate so far.
     const int wanted = static_cast<int>(std::ceil(static_cast<double>(runs) * p.seeds / p.runs));
     out[k] = std::max(p.seeds, std::min({sizing.max_seeds, sizing.growth * p.seeds, wanted}));
