@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "molchaos/sim/parameters.hpp"
@@ -70,7 +71,7 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
       runs.insert(runs.end(), r.begin(), r.end());
     }
     SweepOptions staged = sweep;
-    staged.label = sweep.label + ", more seeds where SE(A)/A is above the target";
+    staged.label = sweep.label + ", further seeds for the target SE(A)/A";
     const auto outcomes = run_sweep(runs, staged);
     std::size_t offset = 0;
     for (const auto& x : extensions) {
