@@ -34,10 +34,6 @@ struct SweepCliOptions {
   bool max_seeds_given = false;
 };
 
-// Stages of further seeds reach a target error (validation/staged_ensemble.hpp); each stage reads
-// the seeds before it back from the cache.
-constexpr int k_target_stages = 4;
-
 // Why runs of a point gave no value, one line per reason: many seeds that share a reason say it
 // once.
 void print_notes(const validation::PointSummary& s) {
@@ -93,14 +89,9 @@ void run_sweep_command(SweepCliOptions& o) {
   const auto runs = validation::expand(o.spec);
   const auto outcomes = validation::run_sweep(runs, so);
   auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});
-  if (o.spec.target_relative_error > 0.0) {
-    validation::SeedSizing sizing;
-    sizing.target_relative_error = o.spec.target_relative_error;
-    sizing.max_seeds = o.spec.max_seeds;
-    // Failed runs are counted per point by the summaries below.
-    validation::grow_to_target({{&points, &o.spec}}, sizing, k_target_stages, so,
-                               validation::WindowRule{});
-  }
+  // --target-error: further seeds in stages (each reads the seeds before it back from the cache);
+  // failed runs are counted per point by the summaries below.
+  validation::grow_to_target({{&points, &o.spec}}, so, validation::WindowRule{});
   std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>5}\n", "density",
                            "eps", "method", "mode", "A", "A_err", "A_theory", "diff/SE", "runs");
   int failed = 0;
@@ -144,7 +135,7 @@ void run_sweep_command(SweepCliOptions& o) {
       std::cerr << fmt::format(
           "note: SE(A)/A is above --target-error {} at {} point(s): --max-seeds {} or the {} "
           "stages were reached\n",
-          o.spec.target_relative_error, above, o.spec.max_seeds, k_target_stages);
+          o.spec.target_relative_error, above, o.spec.max_seeds, validation::k_target_stages);
   }
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();

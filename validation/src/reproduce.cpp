@@ -118,15 +118,6 @@ void record_failures(ReproduceResults& R, const std::vector<RunOutcome>& outcome
     }
 }
 
-// Further stages: each (state point, mode) of Fig. 4, MD and DSMC, gets the seeds its target
-// relative SE of A needs (staged_ensemble.hpp; seed_sizing.hpp for why a point is not sized from
-// its own scatter alone). Seeds 0..n−1 come from the cache. Modes are sized apart: A of two modes
-// started from the same relaxed state correlate weakly over seeds (r ≈ 0.2 for the original and
-// the flux gas, measured in the precision finding), so pairing would shrink the variance of their
-// difference by that fraction at most, while equal seeds would give every mode the seeds of its
-// noisiest one.
-constexpr int k_seed_stages = 4;
-
 void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   EnsembleSpec base;
   base.dimension = 2;
@@ -139,6 +130,8 @@ void define_ensembles(ReproduceResults& R, const ReproduceConfig& cfg) {
   R.fig4_spec.densities = cfg.densities;
   R.fig4_spec.restitutions = cfg.restitutions;
   R.fig4_spec.t_end_in_tau0 = cfg.t_end_in_tau0;
+  R.fig4_spec.target_relative_error = cfg.target_relative_error;  // and the DSMC twin's
+  R.fig4_spec.max_seeds = cfg.max_seeds;
   R.fig3_spec = base;
   R.fig3_spec.densities = {cfg.fig3_density};
   R.fig3_spec.restitutions = {cfg.fig3_restitution};
@@ -174,12 +167,16 @@ void run_ensembles(ReproduceResults& R, const ReproduceConfig& cfg, const SweepO
   const std::vector<RunOutcome> od(outcomes.begin() + n4 + n3 + ne, outcomes.end());
   R.fig4_points = summarize(R.fig4_spec, o4, cfg.window);
   R.dsmc_points = summarize(R.dsmc_spec, od, cfg.window);
-  SeedSizing sizing;
-  sizing.target_relative_error = cfg.target_relative_error;
-  sizing.max_seeds = cfg.max_seeds;
+  // Further stages: each (state point, mode) of Fig. 4, MD and DSMC, gets the seeds its target
+  // relative SE of A needs (staged_ensemble.hpp; seed_sizing.hpp for why a point is not sized from
+  // its own scatter alone). Seeds 0..n−1 come from the cache. Modes are sized apart: A of two
+  // modes started from the same relaxed state correlate weakly over seeds (r ≈ 0.2 for the
+  // original and the flux gas, measured in the precision finding), so pairing would shrink the
+  // variance of their difference by that fraction at most, while equal seeds would give every mode
+  // the seeds of its noisiest one.
   record_failures(
-      R, grow_to_target({{&R.fig4_points, &R.fig4_spec}, {&R.dsmc_points, &R.dsmc_spec}}, sizing,
-                        k_seed_stages, sweep, cfg.window));
+      R, grow_to_target({{&R.fig4_points, &R.fig4_spec}, {&R.dsmc_points, &R.dsmc_spec}}, sweep,
+                        cfg.window));
   R.fig3_points = summarize(R.fig3_spec, R.fig3_runs, cfg.window);
   R.elastic_points = summarize(R.elastic_spec, oe, cfg.window);
   R.fig3_original = R.fig3_points.at(0);

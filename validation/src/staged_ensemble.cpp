@@ -14,8 +14,11 @@ namespace {
 
 // The ensembles of the points of one list that need more seeds, one per point (a gas: one method
 // and mode at one density, whose points differ in restitution, is sized as a whole).
-std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list,
-                                                  const SeedSizing& sizing) {
+std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list) {
+  if (list.spec->target_relative_error <= 0.0) return {};
+  SeedSizing sizing;
+  sizing.target_relative_error = list.spec->target_relative_error;
+  sizing.max_seeds = list.spec->max_seeds;
   std::map<std::tuple<double, int, std::string>, std::vector<const PointResult*>> gases;
   for (const auto& p : *list.points)
     gases[{p.summary.density, static_cast<int>(p.method), p.summary.mode}].push_back(&p);
@@ -51,18 +54,16 @@ bool same_point(const PointResult& a, const PointResult& b) {
 }  // namespace
 
 std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
-                                       const SeedSizing& sizing, int stages,
                                        const SweepOptions& sweep, const WindowRule& window) {
   std::vector<RunOutcome> failures;
-  if (sizing.target_relative_error <= 0.0) return failures;
-  for (int stage = 0; stage < stages; ++stage) {
+  for (int stage = 0; stage < k_target_stages; ++stage) {
     struct Extension {
       EnsembleSpec spec;
       std::vector<PointResult>* points;
     };
     std::vector<Extension> extensions;
     for (const auto& list : lists)
-      for (auto& spec : ensembles_needing_seeds(list, sizing))
+      for (auto& spec : ensembles_needing_seeds(list))
         extensions.push_back({std::move(spec), list.points});
     if (extensions.empty()) break;
     std::vector<sim::Parameters> runs;

@@ -12,20 +12,23 @@
 
 namespace molchaos::validation {
 
-/// One list of point results and the ensemble they were summarized from. A gas is one method and
-/// mode at one density; its points differ in restitution.
+/// Further stages at most: each sizes from more runs than the one before.
+inline constexpr int k_target_stages = 4;
+
+/// One list of point results and the ensemble they were summarized from, whose
+/// target_relative_error and max_seeds size its points (nothing is added when the target is 0). A
+/// gas is one method and mode at one density; its points differ in restitution.
 struct StagedList {
   std::vector<PointResult>* points;
   const EnsembleSpec* spec;
 };
 
-/// Runs up to `stages` further stages over all lists (one sweep per stage), replacing each grown
-/// point's result by the summary of all its seeds; stops early when no point needs more seeds.
-/// Returns the outcomes of the runs that failed in these stages (the caller's record of failures).
-/// The seeds of earlier stages are only read back when `sweep` has a cache; without one they run
-/// again.
+/// Runs up to k_target_stages further stages over all lists (one sweep per stage), replacing each
+/// grown point's result by the summary of all its seeds; stops early when no point needs more
+/// seeds. Returns the outcomes of the runs that failed in these stages (the caller's record of
+/// failures). The seeds of earlier stages are only read back when `sweep` has a cache; without one
+/// they run again.
 std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
-                                       const SeedSizing& sizing, int stages,
                                        const SweepOptions& sweep, const WindowRule& window);
 
 }  // namespace molchaos::validation
