@@ -8,7 +8,6 @@
 
 #include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/theory/sonine.hpp"
-#include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/proportional_fit.hpp"
 #include "molchaos/validation/verdict.hpp"
 #include "reproduce_steps.hpp"
@@ -156,9 +155,7 @@ namespace {
 struct HaffComparison {
   std::vector<ComparisonRow> rows;
   double lowest_percent = 1e300, highest_percent = -1e300;
-  double chi2 = 0.0;
-  int points = 0;
-  double p = 1.0;
+  GlobalTest test;
 };
 
 HaffComparison compare_with_haff(const ReproduceResults& R, const std::string& mode) {
@@ -176,12 +173,9 @@ HaffComparison compare_with_haff(const ReproduceResults& R, const std::string& m
                         p.A_theory, p.summary.A, std::nullopt, a.difference_in_se,
                         "see the global test", k_information_rule,
                         fmt::format("{} runs", p.summary.runs)});
-      if (!a.difference_in_se || p.summary.runs < 2) continue;
-      const double z = normal_score(*a.difference_in_se, p.summary.runs - 1);
-      h.chi2 += z * z;
-      ++h.points;
+      if (a.difference_in_se && p.summary.runs >= 2)
+        h.test.add(*a.difference_in_se, p.summary.runs);
     }
-  h.p = chi_square_p_value(h.chi2, h.points);
   return h;
 }
 
@@ -189,25 +183,25 @@ std::string haff_deciding(const HaffComparison& h) {
   return fmt::format(
       "χ² of A = A_theory = {:.1f} for {} points (p = {:.2g}); A/A_theory − 1 from {:+.2f} % to "
       "{:+.2f} %, largest difference {:.1f} SE",
-      h.chi2, h.points, h.p, h.lowest_percent, h.highest_percent, largest_abs_difference(h.rows));
+      h.test.chi2, h.test.points, h.test.p(), h.lowest_percent, h.highest_percent,
+      largest_abs_difference(h.rows));
 }
 
 }  // namespace
 
 Claim claim_randomized_follows_haff(const ReproduceResults& R) {
   HaffComparison h = compare_with_haff(R, "paper");
-  const bool holds = h.points > 0 && h.p >= k_global_p_threshold;
   Claim c{ClaimSource::paper,
           "the randomized gas (paper's shuffle) cools by Haff's law with kinetic theory's τ0",
-          holds ? "reproduced" : "not reproduced", haff_deciding(h), std::move(h.rows)};
+          h.test.holds() ? "reproduced" : "not reproduced", haff_deciding(h), std::move(h.rows)};
   return c;
 }
 
 Claim finding_flux_follows_haff(const ReproduceResults& R) {
   HaffComparison h = compare_with_haff(R, "flux");
-  const std::string result = h.points == 0                 ? "no points with runs"
-                             : h.p >= k_global_p_threshold ? "agrees"
-                                                           : "differs";
+  const std::string result = h.test.points == 0 ? "no points with runs"
+                             : h.test.holds()   ? "agrees"
+                                                : "differs";
   Claim c{ClaimSource::suite, "the flux-shuffled gas cools by Haff's law with kinetic theory's τ0",
           "beyond the paper", result + ": " + haff_deciding(h), std::move(h.rows)};
   return c;

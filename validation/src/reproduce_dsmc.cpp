@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "molchaos/theory/sonine_hcs.hpp"
-#include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/verdict.hpp"
 #include "reproduce_steps.hpp"
 
@@ -18,8 +17,7 @@ namespace {
 
 struct DsmcComparison {
   std::vector<ComparisonRow> rows;
-  double chi2 = 0.0;
-  int points = 0;
+  GlobalTest test;
   double largest_percent = 0.0;  ///< largest |A_MD/A_DSMC − 1| in per cent
 };
 
@@ -41,12 +39,8 @@ DsmcComparison compare_with_dsmc(const ReproduceResults& R, const std::string& m
                         k_information_rule,
                         "'theory' column: DSMC; 'simulation': MD"};
       c.rows.push_back(std::move(row));
-      if (a.difference_in_se) {
-        // The MD's error comes from a few runs (Student's t); mapped to a normal score first.
-        const double z = normal_score(*a.difference_in_se, md.summary.runs - 1);
-        c.chi2 += z * z;
-        ++c.points;
-      }
+      // The MD's error comes from a few runs (Student's t).
+      if (a.difference_in_se) c.test.add(*a.difference_in_se, md.summary.runs);
       c.largest_percent = std::max(
           c.largest_percent, 100.0 * std::abs(md.summary.A.value / dsmc.summary.A.value - 1.0));
     }
@@ -56,42 +50,32 @@ DsmcComparison compare_with_dsmc(const ReproduceResults& R, const std::string& m
 Claim dsmc_claim(const ReproduceResults& R, const std::string& mode, std::string statement) {
   DsmcComparison d = compare_with_dsmc(R, mode);
   Claim c{ClaimSource::suite, std::move(statement), "beyond the paper", "", std::move(d.rows)};
-  if (d.points == 0) {
+  if (d.test.points == 0) {
     c.deciding = "no points with both MD and DSMC runs";
     return c;
   }
-  const double p = chi_square_p_value(d.chi2, d.points);
   c.deciding = fmt::format(
       "{}: χ² of A_MD = A_DSMC = {:.1f} for {} points (p = {:.2g}); largest difference {:.2f} %",
-      p >= k_global_p_threshold ? "equal within errors" : "different", d.chi2, d.points, p,
+      d.test.holds() ? "equal within errors" : "different", d.test.chi2, d.test.points, d.test.p(),
       d.largest_percent);
   return c;
 }
 
-// χ² of the DSMC gas's a2 against one level of the Sonine theory over all Fig. 4 points; the rows
-// go to `rows`.
-struct A2Test {
-  double chi2 = 0.0;
-  int points = 0;
-};
-
+// One point of the χ² of the DSMC gas's a2 against one level of the Sonine theory over all
+// Fig. 4 points; the rows go to `rows`.
 void add_a2_row(const PointResult& dsmc, const theory::SonineSolution& level,
-                const std::string& name, A2Test& test, std::vector<ComparisonRow>& rows) {
+                const std::string& name, GlobalTest& test, std::vector<ComparisonRow>& rows) {
   const Agreement a = agreement(dsmc.summary.a2, level.a2);
   rows.push_back({fmt::format("a2, n = {}, eps = {:.2f}: DSMC vs {}", dsmc.summary.density,
                               dsmc.summary.restitution, name),
                   level.a2, dsmc.summary.a2, std::nullopt, a.difference_in_se,
                   "see the global test", k_information_rule, "'theory' column: " + name});
-  if (!a.difference_in_se) return;
-  const double z = normal_score(*a.difference_in_se, dsmc.summary.runs - 1);
-  test.chi2 += z * z;
-  ++test.points;
+  if (a.difference_in_se) test.add(*a.difference_in_se, dsmc.summary.runs);
 }
 
-std::string a2_verdict(const char* name, const A2Test& t) {
-  const double p = chi_square_p_value(t.chi2, t.points);
-  return fmt::format("{}: χ² = {:.1f} for {} points (p = {:.2g}, {})", name, t.chi2, t.points, p,
-                     p >= k_global_p_threshold ? "agrees" : "differs");
+std::string a2_verdict(const char* name, const GlobalTest& t) {
+  return fmt::format("{}: χ² = {:.1f} for {} points (p = {:.2g}, {})", name, t.chi2, t.points,
+                     t.p(), t.holds() ? "agrees" : "differs");
 }
 
 }  // namespace
@@ -106,7 +90,7 @@ Claim finding_dsmc_a2_against_sonine(const ReproduceResults& R) {
           "beyond the paper",
           "",
           {}};
-  A2Test first, improved;
+  GlobalTest first, improved;
   const int d = R.dsmc_spec.dimension;
   for (const PointResult& p : R.dsmc_points) {
     if (p.summary.runs < 2) continue;

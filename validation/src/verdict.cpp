@@ -3,11 +3,21 @@
 
 #include <fmt/format.h>
 
+#include "molchaos/validation/pair_correlations.hpp"
+
 namespace molchaos::validation {
 
 bool significantly_below(const Measurement& observed, double bound) {
   return observed.value + k_agreement_standard_errors * observed.error < bound;
 }
+
+void GlobalTest::add(double difference_in_se, int runs) {
+  const double z = normal_score(difference_in_se, runs - 1);
+  chi2 += z * z;
+  ++points;
+}
+
+double GlobalTest::p() const { return chi_square_p_value(chi2, points); }
 
 std::string agreement_rule_text() {
   return fmt::format("agrees within {:g} combined SE", k_agreement_standard_errors);

@@ -20,6 +20,18 @@ using theory::k_agreement_standard_errors;
 /// least that of a single number at 3 standard errors, two-sided: p = 0.0027.
 inline constexpr double k_global_p_threshold = 0.0027;
 
+/// Such a χ², point by point: a difference of `difference_in_se` standard errors of a mean over
+/// `runs` runs (Student's t with runs − 1 degrees of freedom) enters as the normal score of the
+/// same tail probability, squared.
+struct GlobalTest {
+  double chi2 = 0.0;
+  int points = 0;
+  void add(double difference_in_se, int runs);
+  /// Upper tail probability of chi2 for `points` degrees of freedom.
+  double p() const;
+  bool holds() const { return points > 0 && p() >= k_global_p_threshold; }
+};
+
 /// True when observed + 3σ_observed < bound (a claim of the form "less than bound").
 bool significantly_below(const Measurement& observed, double bound);
 
