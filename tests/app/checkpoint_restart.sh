@@ -45,25 +45,32 @@ same whole
   2>/dev/null || fail "restart from the last interval checkpoint"
 same last
 
-# Signals: the run is stopped once its first wall-clock checkpoint exists (it is under way).
+# Signals: the run is stopped once its first wall-clock checkpoint exists (it is under way). It is
+# frozen (SIGSTOP) as soon as the file appears, signalled, then let go (SIGCONT): the signal is
+# handled at the run's next pause, so however fast the machine, the run cannot end between the
+# check and the signal (a fixed sleep there let the whole run finish first on a faster machine).
 wait_for() {  # wait_for FILE PID: until FILE exists (up to 60 s) while PID runs
-  for _ in $(seq 1200); do
+  for _ in $(seq 6000); do
     [ -e "$1" ] && return 0
     kill -0 "$2" 2>/dev/null || return 1
-    sleep 0.05
+    sleep 0.01
   done
   return 1
 }
 for signal in TERM INT KILL; do
   rm -f sig.ckpt
   "$bin" "${args[@]}" --t-end "$t_end" --out "sig$signal.csv" --checkpoint sig.ckpt \
-    --checkpoint-wall 0.05 2>"sig$signal.err" &
+    --checkpoint-wall 0.01 2>"sig$signal.err" &
   pid=$!
   wait_for sig.ckpt "$pid" || fail "no checkpoint before the end of the run (SIG$signal)"
-  sleep 0.05
-  kill "-$signal" "$pid" 2>/dev/null || fail "the run ended before SIG$signal"
-  wait "$pid"
-  status=$?
+  kill -STOP "$pid" 2>/dev/null || fail "the run ended before it could be frozen for SIG$signal"
+  kill "-$signal" "$pid"
+  kill -CONT "$pid" 2>/dev/null
+  while :; do  # with job control, wait also returns when the job stops (status 128 + SIGSTOP)
+    wait "$pid"
+    status=$?
+    kill -0 "$pid" 2>/dev/null || break  # ended and reaped (a zombie still answers kill -0)
+  done
   case $signal in
     KILL) [ "$status" -eq 137 ] || fail "SIGKILL: status $status" ;;
     *) [ "$status" -eq 3 ] || fail "SIG$signal: status $status, expected 3 (checkpoint written)"
