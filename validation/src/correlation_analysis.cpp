@@ -244,12 +244,12 @@ std::vector<AnsatzFitRow> fit_ansatz(const std::vector<GasPair>& points) {
 
 BRoutesVerdict compare_routes(const std::vector<RoutePair>& routes, const std::string& amplitude) {
   BRoutesVerdict v;
-  for (const auto& f : routes) {
-    if (f.difference.error <= 0.0) continue;
-    ++v.points;
-    v.chi2_equal += std::pow(normal_score(f.difference.value / f.difference.error, f.pairs - 1), 2);
-  }
-  v.p_value = chi_square_p_value(v.chi2_equal, v.points);
+  GlobalTest equal;
+  for (const auto& f : routes)
+    if (f.difference.error > 0.0) equal.add(f.difference.value / f.difference.error, f.pairs);
+  v.points = equal.points;
+  v.chi2_equal = equal.chi2;
+  v.p_value = equal.p();
   const auto variance = [](const RoutePair& f, double r) {
     return f.cooling.error * f.cooling.error + r * r * f.contact.error * f.contact.error -
            2.0 * r * f.covariance;

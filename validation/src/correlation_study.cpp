@@ -147,16 +147,15 @@ Measurement weighted_mean(const std::vector<Measurement>& v) {
 }
 
 void cooling_claims(CorrelationStudy& S) {
-  double chi2 = 0.0;
-  int dof = 0;
+  GlobalTest equal;
   std::vector<Measurement> diffs;
   for (const auto& r : S.decomposition)
     if (r.difference.error > 0.0) {
-      chi2 += std::pow(normal_score(r.difference.value / r.difference.error, r.pairs - 1), 2);
-      ++dof;
+      equal.add(r.difference.value / r.difference.error, r.pairs);
       diffs.push_back(r.difference);
     }
-  const double p = chi_square_p_value(chi2, dof);
+  const double chi2 = equal.chi2, p = equal.p();
+  const int dof = equal.points;
   S.claims.push_back(
       {"cooling rate = collision frequency x energy loss per collision: "
        "A_orig/A_chaos equals (omega Y)_chaos/(omega Y)_orig at every point",
@@ -238,22 +237,18 @@ std::array<Measurement, 4> contact_quantities(const ContactMomentRow& r) {
 // measured a2 (a3 = 0 as it is not measured; the theory's a3 ≈ −0.01 would move P by ≈ −2.5e-4,
 // doc/validation.md): χ² of normal scores over all points.
 StudyClaim chaos_values_claim(const CorrelationStudy& S, const std::string& mode) {
-  double chi2 = 0.0;
-  int dof = 0;
+  GlobalTest test;
   for (const auto& r : S.contact_moments) {
     if (r.mode != mode) continue;
     const ContactQuantities mc = molecular_chaos_contact_sonine(r.a2.value, 0.0);
     const std::array<double, 4> expected{mc.P, mc.Q, mc.W, mc.Y};
     const auto measured = contact_quantities(r);
     for (std::size_t q = 0; q < 4; ++q)
-      if (measured[q].error > 0.0) {
-        chi2 += std::pow(normal_score((measured[q].value - expected[q]) / measured[q].error,
-                                      r.runs - 1),
-                         2);
-        ++dof;
-      }
+      if (measured[q].error > 0.0)
+        test.add((measured[q].value - expected[q]) / measured[q].error, r.runs);
   }
-  const double p = chi_square_p_value(chi2, dof);
+  const double chi2 = test.chi2, p = test.p();
+  const int dof = test.points;
   return {gas_name(mode) + ": contact moments equal their molecular-chaos values",
           verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
           fmt::format("chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as "
@@ -264,8 +259,7 @@ StudyClaim chaos_values_claim(const CorrelationStudy& S, const std::string& mode
 // The two references against each other, point by point, with no theory in between: a
 // departure of the flux gas from the Sonine values that DSMC shares is the theory's, not the MD's.
 StudyClaim flux_equals_dsmc_claim(const CorrelationStudy& S) {
-  double chi2 = 0.0;
-  int dof = 0;
+  GlobalTest test;
   for (const auto& f : S.contact_moments) {
     if (f.mode != "flux") continue;
     for (const auto& g : S.contact_moments) {
@@ -275,14 +269,12 @@ StudyClaim flux_equals_dsmc_claim(const CorrelationStudy& S) {
       const auto a = contact_quantities(f), b = contact_quantities(g);
       for (std::size_t q = 0; q < 4; ++q) {
         const double se = std::hypot(a[q].error, b[q].error);
-        if (se <= 0.0) continue;
-        chi2 += std::pow(
-            normal_score((a[q].value - b[q].value) / se, std::min(f.runs, g.runs) - 1), 2);
-        ++dof;
+        if (se > 0.0) test.add((a[q].value - b[q].value) / se, std::min(f.runs, g.runs));
       }
     }
   }
-  const double p = chi_square_p_value(chi2, dof);
+  const double chi2 = test.chi2, p = test.p();
+  const int dof = test.points;
   return {"flux-shuffled gas: contact moments equal the DSMC gas's at the same points",
           verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
           fmt::format("chi2/dof of normal scores of the differences over P, Q, omega/omega_E, Y, "
