@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 #include "cli_support.hpp"
@@ -75,6 +76,13 @@ int main(int argc, char** argv) {
   } catch (const molchaos::app::UsageError& e) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
+  } catch (const std::bad_alloc&) {
+    // The engine's own need (doc/benchmarks.md): about 170-210 bytes per disk, 230-330 per
+    // sphere, beside the samples, snapshots and (in a sweep) one engine per thread.
+    std::fprintf(stderr,
+                 "molchaos: failed: out of memory; a run holds about 200 bytes per disk and 330 "
+                 "per sphere, one run per thread in a sweep: ask for fewer particles or threads\n");
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "molchaos: failed: %s\n", one_line(e.what()).c_str());
     return 1;

@@ -1,6 +1,8 @@
 // One run of a sweep: computed, stored, and a cache write failure kept apart from a failing run.
 #include "molchaos/validation/sweep_worker.hpp"
 
+#include <new>
+
 namespace molchaos::validation {
 
 void CacheWriteStop::record(const CacheWriteError& e) {
@@ -24,6 +26,8 @@ bool compute_and_store(std::size_t i, const sim::Parameters& p, const SweepOptio
   } catch (const CacheWriteError& e) {
     stop.record(e);
     return false;
+  } catch (const std::bad_alloc&) {
+    reporter.failed(i, p, "out of memory (fewer threads hold fewer runs at once)", out);
   } catch (const std::exception& e) {
     reporter.failed(i, p, e.what(), out);
   }
