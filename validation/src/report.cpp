@@ -193,15 +193,17 @@ std::string fig4_tables(const ReproduceResults& r) {
         se > 0 ? (m.A.value - p.A_theory.value) / se : 0.0, m.a2.value, m.a2.error,
         theory::a2_first_sonine(m.dimension, m.restitution));
   }
-  s += "\nLinear fits A = a + s·ε (weighted least squares):\n\n| n | mode | a | s | χ²/dof "
-       "|\n|---|---|---|---|---|\n";
+  s += "\nLinear fits A = a + s·ε (weighted least squares, errors scaled by √(χ²/dof) where it "
+       "exceeds 1; the last column is the slope's SE by the jackknife over seeds, which the ε "
+       "points of a gas share):\n\n| n | mode | a | s | χ²/dof | SE(s) over seeds "
+       "|\n|---|---|---|---|---|---|\n";
   for (const auto& panel : r.fig4.panels)
     for (const auto& series : panel.series)
       if (series.fit)
-        s +=
-            fmt::format("| {} | {} | {:.4f} ± {:.4f} | {:.4f} ± {:.4f} | {:.2f} |\n", panel.density,
-                        series.mode, series.fit->intercept, series.fit->intercept_error,
-                        series.fit->slope, series.fit->slope_error, series.fit->chi2_per_dof);
+        s += fmt::format("| {} | {} | {:.4f} ± {:.4f} | {:.4f} ± {:.4f} | {:.2f} | {:.4f} |\n",
+                         panel.density, series.mode, series.fit->intercept,
+                         series.fit->intercept_error, series.fit->slope, series.fit->slope_error,
+                         series.fit->chi2_per_dof, series.slope_error_over_seeds);
   return s;
 }
 

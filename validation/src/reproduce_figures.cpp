@@ -14,6 +14,7 @@
 #include "molchaos/theory/paper_constants.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/theory/sonine_hcs.hpp"
+#include "molchaos/validation/shared_seed_fit.hpp"
 #include "reproduce_steps.hpp"
 
 namespace molchaos::validation::steps {
@@ -43,14 +44,22 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   s.label = mode_label(s.mode);
   std::vector<double> x;
   std::vector<Measurement> y;
+  std::vector<const PointSummary*> summaries;
+  bool every_point_has_a_scatter = true;
   for (double e : R.config.restitutions) {
     const auto& p = gas_point(R, n, e, mode);
     if (p.summary.runs == 0) continue;
     s.points.push_back({e, p.summary.A, p.summary.runs});
     x.push_back(e);
     y.push_back(p.summary.A);
+    summaries.push_back(&p.summary);
+    every_point_has_a_scatter = every_point_has_a_scatter && p.summary.A_by_seed.size() >= 2;
   }
-  if (x.size() >= 2) s.fit = fit_line(x, y);
+  if (x.size() < 2) return s;
+  s.fit = fit_line(x, y);
+  if (every_point_has_a_scatter)
+    s.slope_error_over_seeds = slope_error_over_shared_seeds(x, summaries) *
+                               std::sqrt(std::max(1.0, s.fit->chi2_per_dof));
   return s;
 }
 

@@ -59,6 +59,10 @@ struct ASeries {
   std::string mode;  ///< "none", "paper", "flux"
   std::vector<APoint> points;
   std::optional<LinearFit> fit;
+  /// The slope's error by the jackknife over seeds, scaled as the fit's by √(χ²/dof) > 1: the
+  /// runs of one seed at every ε start from the same relaxed state, which the fit's own error
+  /// ignores (shared_seed_fit.hpp); 0 where a point has fewer than two runs.
+  double slope_error_over_seeds = 0.0;
 };
 
 /// One panel of Fig. 4 (one density).
