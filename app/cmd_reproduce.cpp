@@ -33,6 +33,7 @@ struct ReproduceCliOptions {
   int threads = 0;
   bool figures = true;
   bool relax_each_run = false;
+  bool quiet = false;
 };
 
 void run_reproduce(const ReproduceCliOptions& o) {
@@ -53,12 +54,14 @@ void run_reproduce(const ReproduceCliOptions& o) {
   sweep.version = k_version;
   sweep.runner = default_sweep_runner();
   sweep.label = o.quick ? "reproduce --quick" : "reproduce";
+  sweep.progress = !o.quiet;
   sim::remove_stale_temporaries(o.out);  // figures and tables of a killed earlier run
-  std::cerr << fmt::format(
-      "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "
-      "plus Fig. 3 and the elastic-limit runs; cache {}\n",
-      o.quick ? "quick look" : "paper scale", cfg.particles, cfg.restitutions.size(),
-      cfg.densities.size(), cfg.seeds, sweep.cache_directory);
+  if (!o.quiet)
+    std::cerr << fmt::format(
+        "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "
+        "plus Fig. 3 and the elastic-limit runs; cache {}\n",
+        o.quick ? "quick look" : "paper scale", cfg.particles, cfg.restitutions.size(),
+        cfg.densities.size(), cfg.seeds, sweep.cache_directory);
   const auto results = validation::reproduce(cfg, sweep);
 
   std::vector<std::string> figure_files;
@@ -140,6 +143,7 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->check(integer_in(0, 1024));
   cmd->add_flag("!--no-figures", o->figures, "skip rendering");
+  cmd->add_flag("--quiet", o->quiet, "no progress on stderr (notes and errors still)");
   cmd->add_flag("--relax-each-run", o->relax_each_run,
                 "relax every run itself instead of restoring the relaxed state of an earlier run "
                 "with the same N, density and seed (the same results, more CPU)");
