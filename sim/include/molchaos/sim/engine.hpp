@@ -155,6 +155,7 @@ class Engine {
   template <bool Prefetch, class Shuffle>
   void collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
                const Shuffle& shuffle);
+  [[gnu::always_inline]] void prefetch_listed_partners(std::int32_t i) const;
   template <bool Prefetch>
   void cross_cell(std::int32_t i);
   template <bool Prefetch = false>
