@@ -391,7 +391,11 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   const std::int32_t found = cells_per_side_ >= 4 && interior_cell(x)
                                  ? keep_neighbours<false>(i, cand, count, lower)
                                  : keep_neighbours<true>(i, cand, count, lower);
-  for (std::int32_t k = 0; k < found; ++k) lists_.prefetch(cand[k]);
+  // Their lists take i, and the prediction that follows a shell exit reads their records.
+  for (std::int32_t k = 0; k < found; ++k) {
+    lists_.prefetch(cand[k]);
+    __builtin_prefetch(&part_[cand[k]]);
+  }
   for (std::int32_t k = 0; k < found; ++k) {
     lists_.add(i, cand[k]);
     lists_.add(cand[k], i);
