@@ -94,11 +94,13 @@ auto Engine<D, Observer>::run_events(double tau_stop, std::uint64_t event_limit,
   for (;;) {
     const auto [t, i] = calendar_.top();  // the earliest pending event
     if (!(t < tau_stop)) return Outcome::reached;
-    // Likely the next event's particle: its records load while this event is processed.
+    // Likely the next event's particle: its records (and its list, which a collision reads at
+    // once for its partners' records) load while this event is processed.
     if (const std::int32_t g = Prefetch ? calendar_.guess_next(i) : -1; g >= 0) {
       __builtin_prefetch(&part_[g]);
       __builtin_prefetch(&ev_[g]);
       calendar_.prefetch(g);
+      if (neighbour_lists_) lists_.prefetch(g);
     }
     if (events_ >= event_limit) return Outcome::paused;
     if (t != clock_.now)
