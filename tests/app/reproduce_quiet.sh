@@ -2,12 +2,7 @@
 # Usage: reproduce_quiet.sh MOLCHAOS
 # reproduce --quiet writes nothing on stderr (a quick look, figures off) and the same report as
 # without it, which shows its progress there.
-set -u
-bin=$(realpath "$1")
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
-cd "$dir" || exit 1
-fail() { echo "FAIL: $*"; exit 1; }
+. "$(dirname "$0")/scratch_lib.sh" "$1"
 "$bin" reproduce --quick --no-figures --quiet --out quiet --cache cache >/dev/null 2>quiet.err ||
   fail "reproduce --quiet: exit status $?"
 [ ! -s quiet.err ] || fail "reproduce --quiet wrote on stderr: $(head -3 quiet.err)"
