@@ -53,7 +53,8 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
     x.push_back(e);
     y.push_back(p.summary.A);
     summaries.push_back(&p.summary);
-    every_point_has_a_scatter = every_point_has_a_scatter && p.summary.A_by_seed.size() >= 2;
+    every_point_has_a_scatter = every_point_has_a_scatter && p.summary.A_by_seed.size() >= 2 &&
+                                p.summary.A.error > 0.0;
   }
   if (x.size() < 2) return s;
   s.fit = fit_line(x, y);
