@@ -206,7 +206,7 @@ auto Engine<D, Observer>::step() -> Status {
 
 // Beyond the cache, with neighbour lists: at the start of a collision, the records of i's listed
 // partners, which the prediction that ends it reads, so that their misses overlap the collision
-// rule and the other particle's (paired rates at packing 0.4, N = 1e5: ×1.14). The same for the
+// rule and the other particle's (paired rates at packing 0.4, N = 1e5: ×1.09). The same for the
 // stencil's cell blocks with cells gained nothing measurable (doc/benchmarks.md).
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::prefetch_listed_partners(
