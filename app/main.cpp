@@ -8,6 +8,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "molchaos/sim/run.hpp"
 #include "molchaos/version.hpp"
 #include "repeated_options.hpp"
 #ifdef MOLCHAOS_HAVE_MPI
@@ -77,11 +78,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
-    // The engine's own need (doc/benchmarks.md): about 170-210 bytes per disk, 230-330 per
-    // sphere, beside the samples, snapshots and (in a sweep) one engine per thread.
-    std::fprintf(stderr,
-                 "molchaos: failed: out of memory; a run holds about 200 bytes per disk and 330 "
-                 "per sphere, one run per thread in a sweep: ask for fewer particles or threads\n");
+    std::fprintf(stderr, "molchaos: failed: %s (or fewer threads, in a sweep)\n",
+                 molchaos::sim::k_out_of_memory_message);
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "molchaos: failed: %s\n", one_line(e.what()).c_str());

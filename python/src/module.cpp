@@ -8,7 +8,9 @@
 #include <cmath>
 #include <csignal>
 #include <cstdint>
+#include <exception>
 #include <map>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -476,6 +478,14 @@ std::string simulate_doc() {
 PYBIND11_MODULE(_molchaos, m) {
   using namespace molchaos::python;
   m.doc() = "molchaos: kinetic theory and event-driven MD of granular gases (sigma = m = k_B = 1)";
+  // MemoryError with the CLI's words instead of pybind11's bare "std::bad_alloc".
+  py::register_exception_translator([](std::exception_ptr raised) {
+    try {
+      if (raised) std::rethrow_exception(raised);
+    } catch (const std::bad_alloc&) {
+      PyErr_SetString(PyExc_MemoryError, molchaos::sim::k_out_of_memory_message);
+    }
+  });
   m.attr("__version__") = std::string(molchaos::k_version);
   m.def(
       "theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),

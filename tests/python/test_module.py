@@ -4,6 +4,7 @@ import json
 import math
 import re
 import subprocess
+import sys
 import threading
 import time
 
@@ -318,3 +319,19 @@ def test_readers_refuse_truncated_files(molchaos_bin, tmp_path):
     cut.write_bytes(snapshot[:-5])
     with pytest.raises(ValueError, match="ends in the middle of a line"):
         molchaos.read_snapshot_csv(cut)
+
+
+def test_a_run_beyond_the_memory_raises_memory_error_with_the_clis_words():
+    # Was: MemoryError("std::bad_alloc"). In its own interpreter, its address space cut to 2 GB
+    # after the imports; 1e8 disks need about 20 GB.
+    code = """
+import resource, molchaos
+resource.setrlimit(resource.RLIMIT_AS, (2_000_000_000, 2_000_000_000))
+try:
+    molchaos.simulate(particles=100_000_000, t_end=1.0)
+except MemoryError as e:
+    print(e)
+"""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.startswith("out of memory") and "fewer particles" in out.stdout
