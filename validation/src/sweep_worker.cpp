@@ -2,6 +2,9 @@
 #include "molchaos/validation/sweep_worker.hpp"
 
 #include <new>
+#include <string>
+
+#include "molchaos/sim/run.hpp"
 
 namespace molchaos::validation {
 
@@ -27,7 +30,7 @@ bool compute_and_store(std::size_t i, const sim::Parameters& p, const SweepOptio
     stop.record(e);
     return false;
   } catch (const std::bad_alloc&) {
-    reporter.failed(i, p, "out of memory (fewer threads hold fewer runs at once)", out);
+    reporter.failed(i, p, std::string(sim::k_out_of_memory_message) + " (or fewer threads)", out);
   } catch (const std::exception& e) {
     reporter.failed(i, p, e.what(), out);
   }
