@@ -60,6 +60,7 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
     struct Extension {
       EnsembleSpec spec;
       std::vector<PointResult>* points;
+      std::size_t runs = 0;  // its share of the stage's runs
     };
     std::vector<Extension> extensions;
     for (const auto& list : lists)
@@ -67,8 +68,9 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
         extensions.push_back({std::move(spec), list.points});
     if (extensions.empty()) break;
     std::vector<sim::Parameters> runs;
-    for (const auto& x : extensions) {
+    for (auto& x : extensions) {
       const auto r = expand(x.spec);
+      x.runs = r.size();
       runs.insert(runs.end(), r.begin(), r.end());
     }
     SweepOptions staged = sweep;
@@ -76,11 +78,10 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
     const auto outcomes = run_sweep(runs, staged);
     std::size_t offset = 0;
     for (const auto& x : extensions) {
-      const std::size_t count = expand(x.spec).size();
       const std::vector<RunOutcome> part(
           outcomes.begin() + static_cast<std::ptrdiff_t>(offset),
-          outcomes.begin() + static_cast<std::ptrdiff_t>(offset + count));
-      offset += count;
+          outcomes.begin() + static_cast<std::ptrdiff_t>(offset + x.runs));
+      offset += x.runs;
       for (const auto& o : part)
         if (!o.ok) failures.push_back(o);
       for (auto& fresh : summarize(x.spec, part, window))
