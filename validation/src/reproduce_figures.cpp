@@ -45,7 +45,6 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
   std::vector<double> x;
   std::vector<Measurement> y;
   std::vector<const PointSummary*> summaries;
-  bool every_point_has_a_scatter = true;
   for (double e : R.config.restitutions) {
     const auto& p = gas_point(R, n, e, mode);
     if (p.summary.runs == 0) continue;
@@ -53,14 +52,11 @@ ASeries a_series(const ReproduceResults& R, double n, const std::string& mode) {
     x.push_back(e);
     y.push_back(p.summary.A);
     summaries.push_back(&p.summary);
-    every_point_has_a_scatter = every_point_has_a_scatter && p.summary.A_by_seed.size() >= 2 &&
-                                p.summary.A.error > 0.0;
   }
   if (x.size() < 2) return s;
   s.fit = fit_line(x, y);
-  if (every_point_has_a_scatter)
-    s.slope_error_over_seeds = slope_error_over_shared_seeds(x, summaries) *
-                               std::sqrt(std::max(1.0, s.fit->chi2_per_dof));
+  if (const auto error = slope_error_over_shared_seeds(x, summaries))
+    s.slope_error_over_seeds = *error * std::sqrt(std::max(1.0, s.fit->chi2_per_dof));
   return s;
 }
 

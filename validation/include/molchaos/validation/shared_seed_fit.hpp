@@ -3,6 +3,7 @@
 // not independent, and the fit's error (which assumes they are) may be too small or too large.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "molchaos/validation/analysis.hpp"
@@ -14,9 +15,9 @@ namespace molchaos::validation {
 /// every point that ran it moves the slope by d_s = −Σ_{a ∋ s} c_a (A_as − ȳ_a) / (n_a − 1), and
 /// the variance is (G − 1)/G Σ_s (d_s − d̄)² over the G seeds, whatever the correlation between
 /// the points. With no seed shared it is (G − 1)/G Σ_a c_a² SE_a² n_a/(n_a − 1), fit_line's
-/// variance before its χ² scaling up to those factors. Returns the standard error; every point
-/// needs two runs or more (PointSummary::A_by_seed).
-double slope_error_over_shared_seeds(const std::vector<double>& x,
-                                     const std::vector<const PointSummary*>& points);
+/// variance before its χ² scaling up to those factors. Returns the standard error, or nothing
+/// where a point has fewer than two runs or no scatter (PointSummary::A_by_seed, A.error).
+std::optional<double> slope_error_over_shared_seeds(const std::vector<double>& x,
+                                                    const std::vector<const PointSummary*>& points);
 
 }  // namespace molchaos::validation
