@@ -57,6 +57,7 @@ wait_for() {  # wait_for FILE PID: until FILE exists (up to 60 s) while PID runs
   done
   return 1
 }
+stopped=$((128 + $(kill -l STOP)))
 for signal in TERM INT KILL; do
   rm -f sig.ckpt
   "$bin" "${args[@]}" --t-end "$t_end" --out "sig$signal.csv" --checkpoint sig.ckpt \
@@ -66,11 +67,9 @@ for signal in TERM INT KILL; do
   kill -STOP "$pid" 2>/dev/null || fail "the run ended before it could be frozen for SIG$signal"
   kill "-$signal" "$pid"
   kill -CONT "$pid" 2>/dev/null
-  while :; do  # with job control, wait also returns when the job stops (status 128 + SIGSTOP)
-    wait "$pid"
-    status=$?
-    kill -0 "$pid" 2>/dev/null || break  # ended and reaped (a zombie still answers kill -0)
-  done
+  # With job control, wait also returns when the job stops (status 128 + SIGSTOP), possibly after
+  # the process has already ended: waiting again then gives the exit status that bash kept.
+  while wait "$pid"; status=$?; [ "$status" -eq "$stopped" ]; do :; done
   case $signal in
     KILL) [ "$status" -eq 137 ] || fail "SIGKILL: status $status" ;;
     *) [ "$status" -eq 3 ] || fail "SIG$signal: status $status, expected 3 (checkpoint written)"
