@@ -49,7 +49,7 @@ BOOST_AUTO_TEST_CASE(no_shared_seed_gives_the_closed_form) {
   double seeds = 0.0;
   for (std::size_t a = 0; a < k_x.size(); ++a) {
     std::vector<double> v(8 + 5 * a);
-    for (double& x : v) x = 1.0 + 0.01 * (1.0 + a) * normal(rng);
+    for (double& x : v) x = 1.0 + 0.01 * (1.0 + static_cast<double>(a)) * normal(rng);
     points.push_back(point(v, 1000 * a));  // seeds apart
     seeds += static_cast<double>(v.size());
   }
@@ -95,7 +95,8 @@ BOOST_AUTO_TEST_CASE(a_tilted_seed_effect_is_exact) {
     std::vector<double> v;
     // a small point-own part, so that every point has an SE; the tilt dominates
     for (std::size_t s = 0; s < delta.size(); ++s)
-      v.push_back(2.0 + 0.1 * a + delta[s] * k_x[a] + 1e-9 * ((s * 7 + a * 3) % 5));
+      v.push_back(2.0 + 0.1 * static_cast<double>(a) + delta[s] * k_x[a] +
+                  1e-9 * static_cast<double>((s * 7 + a * 3) % 5));
     points.push_back(point(v, 1));
   }
   const double expected = std::sqrt(var / n);
@@ -105,7 +106,8 @@ BOOST_AUTO_TEST_CASE(a_tilted_seed_effect_is_exact) {
   std::vector<PointSummary> offset;
   for (std::size_t a = 0; a < k_x.size(); ++a) {
     std::vector<double> v;
-    for (std::size_t s = 0; s < delta.size(); ++s) v.push_back(2.0 + 0.1 * a + delta[s]);
+    for (std::size_t s = 0; s < delta.size(); ++s)
+      v.push_back(2.0 + 0.1 * static_cast<double>(a) + delta[s]);
     offset.push_back(point(v, 1));
   }
   BOOST_TEST(*slope_error_over_shared_seeds(k_x, pointers(offset)) < 1e-12);
