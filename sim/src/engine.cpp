@@ -49,8 +49,7 @@ constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
 // Disks whose data outgrow the cache (k_cache_bytes) are memory-bound: each event costs cache
 // misses, so fewer events (wider cells: 4 instead of 6.5 events per collision at n = 0.05) pay
 // more than the extra pair predictions cost (paired wall-clock rates at N = 1e6, n = 0.05:
-// occupancy 2 ran 1.09, 1.23 and 1.37 times as fast as 0.5); the blocks of 16 ints also hold fewer empty
-// slots per particle (32 instead of 64 bytes).
+// occupancy 2 ran 1.09, 1.23 and 1.37 times as fast as 0.5).
 template <int D>
 constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
 // Engine data above 2 MB: beyond a core's L2 cache (0.5 to 2 MB on current processors), where
@@ -60,9 +59,6 @@ constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy
 // also numbered along a Hilbert curve at every rebuild, and disks get wider cells
 // (k_cell_occupancy_beyond_cache).
 constexpr std::size_t k_cache_bytes = std::size_t{2} << 20;
-// Cells with at most this many slots are gathered by fixed-size copies of 8 or 16 slots (see
-// gather()); 16 covers the neighbour-list cells of dense spheres (~2.6 members, 15 slots).
-constexpr int k_gather_block = 16;
 // Dense spheres use neighbour lists instead of cell crossings (Smallenburg's scheme): a particle
 // lists every particle whose shell centre lies within sigma + 2 * shell of its own, and gets a
 // bookkeeping event when it leaves its shell of radius `shell` around its centre.
@@ -207,7 +203,7 @@ auto Engine<D, Observer>::step() -> Status {
 // Beyond the cache, with neighbour lists: at the start of a collision, the records of i's listed
 // partners, which the prediction that ends it reads, so that their misses overlap the collision
 // rule and the other particle's (paired rates at packing 0.4, N = 1e5: ×1.09). The same for the
-// stencil's cell blocks with cells gained nothing measurable (doc/benchmarks.md).
+// stencil's cells, with cells, gained nothing measurable (doc/benchmarks.md).
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::prefetch_listed_partners(
     std::int32_t i) const {
@@ -386,7 +382,7 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   coords_(part_[i].cell, x);
   int stencil[stencil_size<D>()];
   stencil_of(i, x, stencil);
-  const std::int32_t count = gather<stencil_size<D>()>(stencil);
+  const std::int32_t count = gather<stencil_size<D>(), 4>(stencil);
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
   const std::int32_t lower = only_higher ? i : -1;

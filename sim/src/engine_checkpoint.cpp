@@ -16,7 +16,7 @@
 namespace molchaos::sim {
 
 // Exactness. The engine's future depends on more than positions and velocities: on the order of
-// the events in the calendar's bucket lists and of the members in the cell blocks (ties), on the
+// the events in the calendar's bucket lists and of the members in the cell lists (ties), on the
 // lazily advanced particle clocks, the collision counters that invalidate stale events, and the
 // internal clock's rescaling. Rebuilding these (as resync() does) would give a different but
 // equally valid trajectory, and the same one as the uninterrupted run only if that run also
@@ -35,12 +35,7 @@ template <class Self, class Archive>
 void Engine<D, Observer>::checkpoint_members(Self& self, Archive& archive) {
   static_assert(std::is_trivially_copyable_v<Observer>, "observers are saved as bytes");
   archive(self.part_, self.id_, self.ev_, self.last_collision_time_);
-  // Cell blocks: the aligned origin depends on the allocation's address, so only the blocks are
-  // saved; the reader allocates them for the saved capacity first.
-  archive(self.capacity_);
-  if constexpr (Archive::reading) self.allocate_cells();
-  archive.bytes(self.cell_block(0), self.cells_ * (static_cast<std::size_t>(self.capacity_) + 1) *
-                                        sizeof(std::int32_t));
+  CellMembers::checkpoint_members(self.members_, archive);
   archive(self.center_);
   NeighbourLists::checkpoint_members(self.lists_, archive);
   EventCalendar::checkpoint_members(self.calendar_, archive);
@@ -88,17 +83,14 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
     seen[k] = 1;
   }
   std::fill(seen.begin(), seen.end(), 0);
-  for (std::size_t c = 0; c < cells_; ++c) {
-    const std::span<const std::int32_t> members = cell_members(static_cast<int>(c));
-    if (members.size() > static_cast<std::size_t>(capacity_))
-      in.fail("cell " + std::to_string(c) + " holds more members than its block");
-    for (const std::int32_t i : members) {
-      if (i < 0 || i >= n || seen[i] || part_[i].cell != static_cast<int>(c))
+  if (!members_.shaped_for(cells_, n)) in.fail("cell lists of another size than the grid's");
+  for (std::size_t c = 0; c < cells_; ++c)  // a list that loops meets a particle seen before
+    for (std::int32_t i = members_.first(static_cast<int>(c)); i != n; i = members_.next(i)) {
+      if (i < 0 || i > n || seen[i] || part_[i].cell != static_cast<int>(c))
         in.fail("cell " + std::to_string(c) + " lists a particle that is out of range, listed "
                 "twice, or filed in another cell");
       seen[i] = 1;
     }
-  }
   const double slack = 1e-9 * box_;
   double sum_u2 = 0;
   for (std::int32_t i = 0; i < n; ++i) {

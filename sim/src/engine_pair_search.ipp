@@ -84,41 +84,6 @@ template <bool Wrap>
 }
 #endif
 
-// The members of the Count given cells, gathered into candidates_: each cell's slot block is
-// copied whole (fixed-size copies, unrolled: no branch) and the write position advanced by the
-// member count. Returns the number of candidates.
-template <int D, class Observer>
-template <int Count>
-[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::gather(const int* cells) {
-  std::int32_t* out = candidates_.data();
-  const std::int32_t* blocks = slots_.data() + slots_origin_;
-  const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
-  std::int32_t k = 0;
-  // Fixed-size copies of whole blocks, unrolled (slots_ and candidates_ are padded for them): no
-  // branch on the member counts, which are coin flips for the branch predictor.
-  auto copy_blocks = [&]<int Block>() {
-#pragma GCC unroll 27
-    for (int s = 0; s < Count; ++s) {
-      const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
-      std::memcpy(out + k, block + 1, Block * sizeof(std::int32_t));
-      k += block[0];
-    }
-  };
-  if (capacity_ <= 8) {
-    copy_blocks.template operator()<8>();
-  } else if (capacity_ <= k_gather_block) {
-    copy_blocks.template operator()<k_gather_block>();
-  } else {  // crowded cells (clusters): copy the members only
-    for (int s = 0; s < Count; ++s) {
-      const std::int32_t* block = blocks + static_cast<std::size_t>(cells[s]) * stride;
-      const std::int32_t members = block[0];
-      for (int m = 0; m < members; ++m) out[k + m] = block[1 + m];
-      k += members;
-    }
-  }
-  return k;
-}
-
 // The earliest collision of i (at clock_.now) with the listed candidates after `best`: updates
 // best and partner; Wrap = false when no candidate can be nearer through the periodic boundary
 // (pair_times()). Branch-free selection; candidates in list order, the first of equal times wins.

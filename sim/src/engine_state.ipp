@@ -27,10 +27,11 @@ Engine<D, Observer>::Engine(const Parameters& p)
                ? list_cutoff()
                : std::max(1.0, std::pow(occupancy / p.density, 1.0 / static_cast<double>(D)));
   };
-  // Whether the engine's data (with the cells for the cache, blocks of 8 ints) outgrow the cache.
+  // Whether the engine's data (with the cells for the cache: a list head each, and a link and a
+  // candidate slot per particle) outgrow the cache.
   const double cells_in_cache = std::pow(std::floor(box_ / cell_width_for(k_cell_occupancy<D>)), D);
   outgrows_cache_ = static_cast<double>(memory_bytes() + EventCalendar::memory_bytes_for(n_)) +
-                        32.0 * cells_in_cache >
+                        4.0 * cells_in_cache + 8.0 * static_cast<double>(n_) >
                     static_cast<double>(k_cache_bytes);
   const double width_target = cell_width_for(outgrows_cache_ ? k_cell_occupancy_beyond_cache<D>
                                                              : k_cell_occupancy<D>);
@@ -83,11 +84,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
   std::size_t cells = 1;
   for (int a = 0; a < D; ++a) cells *= static_cast<std::size_t>(cells_per_side_);
   cells_ = cells;
-  // Initial slots per cell: room for well above the mean occupancy (blocks of 8, 16, ... ints
-  // with the count); grows on overflow.
-  const double mean = static_cast<double>(n_) / static_cast<double>(cells);
-  capacity_ = 8 * static_cast<int>(std::ceil((3 * mean + 5) / 8)) - 1;
-  allocate_cells();
+  candidates_.resize(static_cast<std::size_t>(n_) + 1);
 
   Rng rng(p.seed);
   const std::vector<double> positions = place_particles<D>(n_, box_, rng);
@@ -315,8 +312,9 @@ void Engine<D, Observer>::sort_by_cell() {
       k = from;
     }
   }
-  allocate_cells();
-  for (std::int32_t i = 0; i < n_; ++i) file_in_cell(i, part_[i].cell);
+  // Filed from the last particle to the first: each cell lists its members in increasing index.
+  members_.reset(cells_, n_);
+  for (std::int32_t i = n_ - 1; i >= 0; --i) file_in_cell(i, part_[i].cell);
 }
 
 template <int D, class Observer>
@@ -365,8 +363,8 @@ int Engine<D, Observer>::cell_of_position(const double* r) const {
 
 template <int D, class Observer>
 void Engine<D, Observer>::build_cells() {
-  allocate_cells();
-  for (std::int32_t i = 0; i < n_; ++i) {
+  members_.reset(cells_, n_);
+  for (std::int32_t i = n_ - 1; i >= 0; --i) {
     for (int a = 0; a < D; ++a) {
       double& x = part_[i].r[a];
       if (x < 0) x += box_;
@@ -376,74 +374,15 @@ void Engine<D, Observer>::build_cells() {
   }
 }
 
-// Files i in the slots of cell c.
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
-  if (cell_block(c)[0] == capacity_) [[unlikely]] grow_cells();  // i is not filed: skipped
-  std::int32_t* block = cell_block(c);
   part_[i].cell = c;
-  block[1 + block[0]++] = i;
-}
-
-template <int D, class Observer>
-void Engine<D, Observer>::allocate_cells() {
-  const std::size_t stride = static_cast<std::size_t>(capacity_) + 1;
-  // Room to align block 0 to 32 bytes (8 ints), and padding for gather()'s fixed-size copies.
-  slots_.assign(cells_ * stride + 8 + k_gather_block + 1, 0);
-  const auto address = reinterpret_cast<std::uintptr_t>(slots_.data());
-  slots_origin_ = ((32 - address % 32) % 32) / sizeof(std::int32_t);
-  candidates_.resize(static_cast<std::size_t>(stencil_size<D>()) * capacity_ + k_gather_block);
-}
-
-// More slots per cell (a cluster formed): doubles the block size; each cell keeps its members,
-// in increasing index (the order a re-filing in index order gives).
-template <int D, class Observer>
-void Engine<D, Observer>::grow_cells() {
-  const std::vector<std::int32_t> old = std::move(slots_);
-  const std::size_t old_origin = slots_origin_;
-  const std::size_t old_stride = static_cast<std::size_t>(capacity_) + 1;
-  capacity_ = 2 * (capacity_ + 1) - 1;
-  allocate_cells();
-  for (std::size_t c = 0; c < cells_; ++c) {
-    const std::int32_t* from = old.data() + old_origin + c * old_stride;
-    std::int32_t* to = cell_block(static_cast<int>(c));
-    std::copy(from, from + 1 + from[0], to);
-    std::sort(to + 1, to + 1 + to[0]);
-  }
-}
-
-// The slot of member i in a cell block. Blocks of 8 or 16 ints are searched with SSE2 compares
-// (no per-particle slot index to keep: one random memory access less per crossing, the block is
-// read anyway); lanes outside 1 .. count are masked, they may hold stale copies.
-template <int D, class Observer>
-[[gnu::always_inline]] inline std::int32_t Engine<D, Observer>::slot_in_block(
-    const std::int32_t* block, std::int32_t i) const {
-#if defined(__SSE2__)
-  if (capacity_ < k_gather_block) {
-    const __m128i key = _mm_set1_epi32(i);
-    const auto* v = reinterpret_cast<const __m128i*>(block);  // 32-byte aligned
-    auto lanes = [&](int q) {
-      return static_cast<unsigned>(
-          _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(_mm_load_si128(v + q), key))));
-    };
-    unsigned bits = lanes(0) | lanes(1) << 4;
-    if (capacity_ > 7) bits |= lanes(2) << 8 | lanes(3) << 12;
-    const unsigned valid = (2u << block[0]) - 2u;
-    return __builtin_ctz(bits & valid) - 1;
-  }
-#endif
-  std::int32_t k = 0;
-  while (block[1 + k] != i) ++k;
-  return k;
+  members_.add(i, c);
 }
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
-  // Swap-remove: the cell's last member takes i's slot.
-  std::int32_t* block = cell_block(part_[i].cell);
-  const std::int32_t k = slot_in_block(block, i);
-  const std::int32_t last = block[block[0]--];
-  block[1 + k] = last;
+  members_.remove(i, part_[i].cell);
 }
 
 template <int D, class Observer>
@@ -497,7 +436,7 @@ double Engine<D, Observer>::min_pair_distance() const {
     coords_(part_[i].cell, x);
     neighbour_cells<D>(x, cells_per_side_, stencil);
     for (int s = 0; s < stencil_size<D>(); ++s)
-      for (const std::int32_t j : cell_members(stencil[s])) {
+      for (std::int32_t j = members_.first(stencil[s]); j != members_.end(); j = members_.next(j)) {
         if (j <= i) continue;
         double d2 = 0;
         for (int a = 0; a < D; ++a) {
@@ -523,6 +462,6 @@ void Engine<D, Observer>::check_overlaps() const {
 template <int D, class Observer>
 std::size_t Engine<D, Observer>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + bytes(slots_) + bytes(center_) + lists_.memory_bytes() +
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + members_.memory_bytes() + bytes(candidates_) + bytes(center_) + lists_.memory_bytes() +
          calendar_.memory_bytes();
 }

@@ -22,6 +22,7 @@
 #endif
 
 #include "molchaos/sim/cell_grid.hpp"
+#include "molchaos/sim/cell_members.hpp"
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/collision_model.hpp"
 #include "molchaos/sim/collision_observers.hpp"
@@ -171,8 +172,10 @@ class Engine {
   template <bool Wrap>
   [[gnu::always_inline]] std::int32_t keep_neighbours(std::int32_t i, std::int32_t* cand,
                                                       std::int32_t count, std::int32_t lower) const;
-  template <int Count>
-  [[gnu::always_inline]] std::int32_t gather(const int* cells);
+  template <int Count, int Unrolled = 1>
+  [[gnu::always_inline]] std::int32_t gather(const int* cells) {
+    return members_.gather<Count, Unrolled>(cells, candidates_.data());
+  }
   template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
                                        double& best, std::int32_t& partner) const;
@@ -194,9 +197,6 @@ class Engine {
   int cell_of_position(const double* r) const;
   [[gnu::always_inline]] void file_in_cell(std::int32_t i, int c);
   [[gnu::always_inline]] void cell_remove(std::int32_t i);
-  [[gnu::always_inline]] std::int32_t slot_in_block(const std::int32_t* block,
-                                                    std::int32_t i) const;
-  void grow_cells();
   void request_stop(StopReason reason);
   double sum_velocity_squared() const;
   void scale_velocities(double factor);  // and recomputes sum_u2_
@@ -238,25 +238,10 @@ class Engine {
   };
   std::vector<EventData> ev_;
   std::vector<double> last_collision_time_;  // tau of the particle's last collision
-  // Cell lists as blocks of capacity_ + 1 ints (a multiple of 8, each block 32-byte aligned):
-  // block[0] is the member count, block[1 .. count] the members. The count shares the members'
-  // cache line, and a stencil scan reads contiguous indices and independent partner records.
-  std::vector<std::int32_t> slots_;
-  std::size_t slots_origin_ = 0;  // index in slots_ of cell 0's block (32-byte aligned)
-  std::size_t cells_ = 0;         // number of cells
-  int capacity_ = 0;              // members per block
-  std::vector<std::int32_t> candidates_;  // scratch: the members of a stencil's cells
-  std::int32_t* cell_block(int c) {
-    return slots_.data() + slots_origin_ + static_cast<std::size_t>(c) * (capacity_ + 1);
-  }
-  const std::int32_t* cell_block(int c) const {
-    return slots_.data() + slots_origin_ + static_cast<std::size_t>(c) * (capacity_ + 1);
-  }
-  std::span<const std::int32_t> cell_members(int c) const {
-    const std::int32_t* block = cell_block(c);
-    return {block + 1, static_cast<std::size_t>(block[0])};
-  }
-  void allocate_cells();  // empty blocks of capacity_ members for cells_ cells
+  // The cells' members, and scratch for a stencil's: room for every particle and one more.
+  CellMembers members_;
+  std::size_t cells_ = 0;  // number of cells
+  std::vector<std::int32_t> candidates_;
 
   // Neighbour lists (dense spheres only): shell centres and the lists.
   bool neighbour_lists_ = false;

@@ -1,0 +1,85 @@
+// The members of each cell of the engine's grid, as one singly linked list per cell: a head per
+// cell and a link per particle, 4 bytes each. A stencil's scan reads its cells' heads, which lie
+// in runs of three consecutive cells (12 bytes), and the links of the occupied ones; blocks of
+// slots per cell would read 32 bytes a cell, most of them empty in a dilute gas, and need room for
+// the most crowded cell. For 10^5 spheres at packing 0.1 (2.5 cells a sphere) the heads take 1 MB
+// against 8 MB of blocks, and the scans' cache misses were half of the engine's (callgrind).
+// Which particle lies in which cell is the engine's business; this class only files them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace molchaos::sim {
+
+class CellMembers {
+ public:
+  /// `cells` empty cells for particles 0 .. n-1.
+  void reset(std::size_t cells, std::int32_t n) {
+    end_ = n;
+    head_.assign(cells, n);
+    next_.assign(static_cast<std::size_t>(n) + 1, n);  // the end links to itself (gather())
+  }
+
+  /// Files i in cell c, first of its members.
+  void add(std::int32_t i, int c) {
+    next_[i] = head_[c];
+    head_[c] = i;
+  }
+  /// Takes i out of cell c, which holds it (a walk over the members before it: a few at most).
+  void remove(std::int32_t i, int c) {
+    std::int32_t* link = &head_[c];
+    while (*link != i) link = &next_[*link];
+    *link = next_[i];
+  }
+
+  /// The members of the Count given cells, written to out, which has room for every particle
+  /// and one more; returns their number. The first Unrolled members of a cell are copied without
+  /// a branch (the end links to itself, and a copy of it is overwritten by the next member):
+  /// whether a cell holds one member more is a coin flip for the branch predictor. Only members
+  /// beyond those take the loop.
+  template <int Count, int Unrolled = 1>
+  [[gnu::always_inline]] std::int32_t gather(const int* cells, std::int32_t* out) const {
+    std::int32_t k = 0;
+#pragma GCC unroll 27
+    for (int s = 0; s < Count; ++s) {
+      std::int32_t j = head_[cells[s]];
+#pragma GCC unroll 8
+      for (int u = 0; u < Unrolled; ++u) {
+        out[k] = j;
+        k += j != end_;
+        j = next_[j];
+      }
+      for (; j != end_; j = next_[j]) out[k++] = j;
+    }
+    return k;
+  }
+
+  /// The walk over a cell's members: the first, then next() until end().
+  std::int32_t first(int c) const { return head_[c]; }
+  std::int32_t next(std::int32_t i) const { return next_[i]; }
+  std::int32_t end() const { return end_; }
+  /// Sized for `cells` cells and n particles, the lists ended by n (a restored checkpoint's check).
+  bool shaped_for(std::size_t cells, std::int32_t n) const {
+    return end_ == n && head_.size() == cells && next_.size() == static_cast<std::size_t>(n) + 1 &&
+           next_.back() == n;
+  }
+
+  /// Every member, for checkpoints (checkpoint.hpp). Self: const CellMembers to write,
+  /// CellMembers to read.
+  template <class Self, class Archive>
+  static void checkpoint_members(Self& self, Archive& archive) {
+    archive(self.end_, self.head_, self.next_);
+  }
+
+  std::size_t memory_bytes() const {
+    return (head_.capacity() + next_.capacity()) * sizeof(std::int32_t);
+  }
+
+ private:
+  std::int32_t end_ = 0;  // the link that ends a list: the particle count
+  std::vector<std::int32_t> head_, next_;
+};
+
+}  // namespace molchaos::sim
