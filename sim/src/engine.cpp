@@ -52,6 +52,16 @@ constexpr double k_cell_occupancy = D == 2 ? 0.5 : 0.4;
 // occupancy 2 ran 1.09, 1.23 and 1.37 times as fast as 0.5).
 template <int D>
 constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy<D>;
+// Members of a cell copied without a branch in a stencil's gather (CellMembers::gather), the loop
+// taking only the rest: whether a cell holds one member more is a coin flip for the branch
+// predictor, each unrolled copy one more dependent load. One for the spheres' cells of 0.4; for
+// disks two in the cache (cells of 0.5: paired against one, the paper's case ran 1.01 to 1.05
+// times as fast, 0.99 to 1.04 and 1.01 to 1.03 with the shuffles) and three beyond it (cells of 2: at N = 1e5 one ran at 0.8 to 0.95 of the rate of the
+// earlier blocks of slots, three as fast); four for the neighbour-list cells of dense spheres
+// (~2.6 members; paired rates, doc/benchmarks.md).
+template <int D, bool BeyondCache>
+constexpr int k_branch_free_members = D == 2 ? (BeyondCache ? 3 : 2) : 1;
+constexpr int k_branch_free_list_members = 4;
 // Engine data above 2 MB: beyond a core's L2 cache (0.5 to 2 MB on current processors), where
 // the misses go to the shared last level or to memory. Software prefetches (of the next event's
 // and of the candidates' records) only pay then; below, they are extra instructions (8 % of them
@@ -338,7 +348,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
     int stencil[stencil_size<D>()];
     stencil_of(i, x, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
-    const std::int32_t count = gather<stencil_size<D>()>(stencil);
+    const std::int32_t count = gather<stencil_size<D>(), k_branch_free_members<D, Prefetch>>(stencil);
     if (interior_cell(x))
       earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
     else
@@ -382,7 +392,7 @@ void Engine<D, Observer>::collect_neighbours(std::int32_t i, bool only_higher) {
   coords_(part_[i].cell, x);
   int stencil[stencil_size<D>()];
   stencil_of(i, x, stencil);
-  const std::int32_t count = gather<stencil_size<D>(), 4>(stencil);
+  const std::int32_t count = gather<stencil_size<D>(), k_branch_free_list_members>(stencil);
   std::int32_t* cand = candidates_.data();
   for (std::int32_t k = 0; k < count; ++k) __builtin_prefetch(&center_[D * cand[k]]);
   const std::int32_t lower = only_higher ? i : -1;
@@ -463,7 +473,7 @@ void Engine<D, Observer>::cross_cell(std::int32_t i) {
   }
   double best = ev_[i].coll_time;
   std::int32_t partner = -1;
-  const std::int32_t count = gather<slab_size<D>()>(slab);
+  const std::int32_t count = gather<slab_size<D>(), k_branch_free_members<D, Prefetch>>(slab);
   if (interior)
     earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
   else

@@ -462,6 +462,7 @@ void Engine<D, Observer>::check_overlaps() const {
 template <int D, class Observer>
 std::size_t Engine<D, Observer>::memory_bytes() const {
   auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
-  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) + members_.memory_bytes() + bytes(candidates_) + bytes(center_) + lists_.memory_bytes() +
+  return bytes(part_) + bytes(id_) + bytes(ev_) + bytes(last_collision_time_) +
+         members_.memory_bytes() + bytes(candidates_) + bytes(center_) + lists_.memory_bytes() +
          calendar_.memory_bytes();
 }

@@ -76,7 +76,8 @@ BOOST_AUTO_TEST_CASE(a_cell_lists_its_members_last_filed_first_and_empty_cells_g
   CellMembers cells;
   cells.reset(3, 5);
   for (const std::int32_t i : {4, 1, 3}) cells.add(i, 1);
-  BOOST_TEST(walk(cells, 1) == (std::vector<std::int32_t>{3, 1, 4}), boost::test_tools::per_element());
+  BOOST_TEST(walk(cells, 1) == (std::vector<std::int32_t>{3, 1, 4}),
+             boost::test_tools::per_element());
   cells.remove(1, 1);
   BOOST_TEST(walk(cells, 1) == (std::vector<std::int32_t>{3, 4}), boost::test_tools::per_element());
   cells.remove(3, 1);
