@@ -17,11 +17,11 @@ Engine<D, Observer>::Engine(const Parameters& p)
                      box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
   shell_ = neighbour_lists_ ? k_shell : 0.0;
   const std::size_t n = static_cast<std::size_t>(n_);
-  part_.assign(n, Particle{});
+  assign_in_huge_pages(part_, n, Particle{});
   id_.resize(n);
   for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  ev_.assign(n, EventData{});
-  last_collision_time_.assign(n, -k_inf);
+  assign_in_huge_pages(ev_, n, EventData{});
+  assign_in_huge_pages(last_collision_time_, n, -k_inf);
   auto cell_width_for = [&](double occupancy) {
     return neighbour_lists_
                ? list_cutoff()

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "molchaos/sim/huge_pages.hpp"
+
 namespace molchaos::sim {
 
 class CellMembers {
@@ -18,8 +20,8 @@ class CellMembers {
   /// `cells` empty cells for particles 0 .. n-1.
   void reset(std::size_t cells, std::int32_t n) {
     end_ = n;
-    head_.assign(cells, n);
-    next_.assign(static_cast<std::size_t>(n) + 1, n);  // the end links to itself (gather())
+    assign_in_huge_pages(head_, cells, n);
+    assign_in_huge_pages(next_, static_cast<std::size_t>(n) + 1, n);  // the end links to itself (gather())
   }
 
   /// Files i in cell c, first of its members.

@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "molchaos/sim/huge_pages.hpp"
+
 namespace molchaos::sim {
 
 class EventCalendar {
@@ -29,8 +31,8 @@ class EventCalendar {
     buckets_ = 64;
     while (buckets_ < buckets) buckets_ *= 2;
     mask_ = buckets_ - 1;
-    e_.assign(static_cast<std::size_t>(n), Entry{});
-    head_.assign(static_cast<std::size_t>(buckets_), -1);
+    assign_in_huge_pages(e_, static_cast<std::size_t>(n), Entry{});
+    assign_in_huge_pages(head_, static_cast<std::size_t>(buckets_), std::int32_t{-1});
     occupied_.assign(static_cast<std::size_t>(buckets_ / 64), 0);
     overflow_ = -1;
     current_ = 0;

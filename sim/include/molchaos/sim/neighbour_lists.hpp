@@ -11,6 +11,8 @@
 #include <span>
 #include <vector>
 
+#include "molchaos/sim/huge_pages.hpp"
+
 namespace molchaos::sim {
 
 class NeighbourLists {
@@ -20,7 +22,7 @@ class NeighbourLists {
     n_ = n;
     if (capacity > 0) capacity_ = capacity;
     count_.assign(static_cast<std::size_t>(n), 0);
-    slots_.assign(static_cast<std::size_t>(n) * capacity_, -1);
+    assign_in_huge_pages(slots_, static_cast<std::size_t>(n) * capacity_, std::int32_t{-1});
   }
 
   int capacity() const { return capacity_; }
@@ -73,7 +75,8 @@ class NeighbourLists {
   void grow() {
     const int old = capacity_;
     capacity_ = std::max(8, 2 * old);
-    std::vector<std::int32_t> grown(static_cast<std::size_t>(n_) * capacity_, -1);
+    std::vector<std::int32_t> grown;
+    assign_in_huge_pages(grown, static_cast<std::size_t>(n_) * capacity_, std::int32_t{-1});
     for (std::int32_t i = 0; i < n_; ++i)
       for (std::int32_t k = 0; k < count_[i]; ++k)
         grown[static_cast<std::size_t>(i) * capacity_ + k] =
