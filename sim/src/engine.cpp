@@ -57,9 +57,10 @@ constexpr double k_cell_occupancy_beyond_cache = D == 2 ? 2.0 : k_cell_occupancy
 // taking only the rest: whether a cell holds one member more is a coin flip for the branch
 // predictor, each unrolled copy one more dependent load. One for the spheres' cells of 0.4; for
 // disks two in the cache (cells of 0.5: paired against one, the paper's case ran 1.01 to 1.05
-// times as fast, 0.99 to 1.04 and 1.01 to 1.03 with the shuffles) and three beyond it (cells of 2: at N = 1e5 one ran at 0.8 to 0.95 of the rate of the
-// earlier blocks of slots, three as fast); four for the neighbour-list cells of dense spheres
-// (~2.6 members; paired rates, doc/benchmarks.md).
+// times as fast, 0.99 to 1.04 and 1.01 to 1.03 with the shuffles) and three beyond it (cells of
+// 2: at N = 1e5 one ran at 0.8 to 0.95 of the rate of the earlier blocks of slots, three as
+// fast); four for the neighbour-list cells of dense spheres (~2.6 members; paired rates,
+// doc/benchmarks.md).
 template <int D, bool BeyondCache>
 constexpr int k_branch_free_members = D == 2 ? (BeyondCache ? 3 : 2) : 1;
 constexpr int k_branch_free_list_members = 4;
@@ -349,7 +350,8 @@ void Engine<D, Observer>::predict(std::int32_t i) {
     int stencil[stencil_size<D>()];
     stencil_of(i, x, stencil);
     // i itself is among the candidates: its pair time is +inf (b = 0).
-    const std::int32_t count = gather<stencil_size<D>(), k_branch_free_members<D, Prefetch>>(stencil);
+    const std::int32_t count =
+        gather<stencil_size<D>(), k_branch_free_members<D, Prefetch>>(stencil);
     if (interior_cell(x))
       earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
     else

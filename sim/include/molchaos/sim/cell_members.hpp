@@ -21,7 +21,7 @@ class CellMembers {
   void reset(std::size_t cells, std::int32_t n) {
     end_ = n;
     assign_in_huge_pages(head_, cells, n);
-    assign_in_huge_pages(next_, static_cast<std::size_t>(n) + 1, n);  // the end links to itself (gather())
+    assign_in_huge_pages(next_, static_cast<std::size_t>(n) + 1, n);  // next_[n]: n (gather())
   }
 
   /// Files i in cell c, first of its members.
