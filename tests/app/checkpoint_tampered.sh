@@ -30,6 +30,10 @@ samples = struct.unpack_from("<Q", data, payload + 16)[0]
 engine = payload + 16 + 8 + samples * sample + 8
 assert struct.unpack_from("<Q", data, engine)[0] == 400, "layout of the payload not understood"
 record = engine + 8
+# The record's size (the engine's layout): the particles' original indices follow the records,
+# opening with their count.
+stride = next(b for b in range(48, 257, 16)
+              if struct.unpack_from("<Q", data, record + 400 * b)[0] == 400)
 x, y, vx, vy = struct.unpack_from("<4d", data, record)
 if what == "nan":
     struct.pack_into("<d", data, record, float("nan"))
@@ -39,8 +43,8 @@ elif what == "velocity":
     struct.pack_into("<d", data, record + 16, 2 * vx + 1)
 elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
-elif what == "overlap":  # particle 1 (the next 48-byte record) onto particle 0, at its time
-    struct.pack_into("<2d", data, record + 48, x, y)
+elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
+    struct.pack_into("<2d", data, record + stride, x, y)
 h = 0xcbf29ce484222325
 for b in data[payload:payload + size]:
     h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
