@@ -16,10 +16,10 @@ namespace molchaos::sim {
 using ProgressCallback = std::function<void(double fraction_done)>;
 
 /// What a run that does not fit in memory says (std::bad_alloc), in the CLI and the Python
-/// module alike: the engine's own need per particle (doc/benchmarks.md: 143-159 bytes per disk,
-/// 171-311 per sphere; a whole run of 10^6 disks peaks at 192), beside its samples and snapshots.
+/// module alike: the engine's own need per particle (doc/benchmarks.md: 159-175 bytes per disk,
+/// 171-311 per sphere; a whole run of 10^6 disks peaks at 208), beside its samples and snapshots.
 inline constexpr const char* k_out_of_memory_message =
-    "out of memory; a run holds about 190 bytes per disk and 310 per sphere: ask for fewer "
+    "out of memory; a run holds about 210 bytes per disk and 310 per sphere: ask for fewer "
     "particles";
 
 /// Richer progress report for front ends that show a rate.
