@@ -215,10 +215,10 @@ class Engine {
   std::vector<double> wall_;     // cell walls: k * cell_width_, and box_ for the last one
 
   // The record a pair prediction reads about the partner, one per particle and one 64-byte cache
-  // line each (48 bytes used for d = 2, which straddled two lines every other time unaligned: one
-  // line instead ran 1.07 to 1.11 times as fast beyond the cache, the paper's case 0.99): an
-  // array of small structs rather than separate arrays, because each prediction touches all of
-  // these fields of a random partner at once.
+  // line each (d = 2 uses 48 bytes; unaligned, they straddled two lines every other time, and one
+  // line each ran 1.07 to 1.11 times as fast beyond the cache, the paper's case 0.99): an array
+  // of small structs rather than separate arrays, because each prediction touches all of these
+  // fields of a random partner at once.
   struct alignas(64) Particle {
     double r[D];            // position at the local time t, in [0, box]
     double v[D];            // velocity, internal units
