@@ -2,7 +2,10 @@
 # Usage: out_of_memory.sh MOLCHAOS
 # A run that does not fit in memory stops with one line saying so (not "std::bad_alloc") and exit
 # status 1, and leaves no output behind; in a sweep, the failed runs are noted as out of memory.
-. "$(dirname "$0")/scratch_lib.sh" "$1"
+set -u
+bin=$(realpath "$1")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 # 1e8 disks need about 20 GB; the address space is limited to 2 GB.
 (ulimit -v 2000000; "$bin" simulate --particles 100000000 --t-end 1 --out run.csv 2>err.txt)
 status=$?

@@ -2,7 +2,10 @@
 # Usage: reproduce_quiet.sh MOLCHAOS
 # reproduce --quiet writes nothing on stderr (a quick look, figures off) and the same report as
 # without it, which shows its progress there.
-. "$(dirname "$0")/scratch_lib.sh" "$1"
+set -u
+bin=$(realpath "$1")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
 "$bin" reproduce --quick --no-figures --quiet --out quiet --cache cache >/dev/null 2>quiet.err ||
   fail "reproduce --quiet: exit status $?"
 [ ! -s quiet.err ] || fail "reproduce --quiet wrote on stderr: $(head -3 quiet.err)"
