@@ -154,15 +154,13 @@ void cooling_claims(CorrelationStudy& S) {
       equal.add(r.difference.value / r.difference.error, r.pairs);
       diffs.push_back(r.difference);
     }
-  const double chi2 = equal.chi2, p = equal.p();
-  const int dof = equal.points;
   S.claims.push_back(
       {"cooling rate = collision frequency x energy loss per collision: "
        "A_orig/A_chaos equals (omega Y)_chaos/(omega Y)_orig at every point",
-       verdict_p(p), weighted_mean(diffs),
+       verdict_p(equal.p()), weighted_mean(diffs),
        fmt::format("weighted mean of A ratio − product; chi2 = {:.1f}, dof = {}, "
                    "p = {:.2g}",
-                   chi2, dof, p)});
+                   equal.chi2, equal.points, equal.p())});
   std::vector<std::pair<int, double>> groups;
   for (const auto& r : S.decomposition)
     if (std::find(groups.begin(), groups.end(), std::pair{r.dimension, r.density}) == groups.end())
@@ -247,13 +245,11 @@ StudyClaim chaos_values_claim(const CorrelationStudy& S, const std::string& mode
       if (measured[q].error > 0.0)
         test.add((measured[q].value - expected[q]) / measured[q].error, r.runs);
   }
-  const double chi2 = test.chi2, p = test.p();
-  const int dof = test.points;
   return {gas_name(mode) + ": contact moments equal their molecular-chaos values",
-          verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
+          verdict_p(test.p()), Measurement{test.chi2_per_dof(), 0.0},
           fmt::format("chi2/dof of normal scores over P, Q, omega/omega_E, Y (treated as "
                       "independent), chi2 = {:.1f}, dof = {}, p = {:.2g}",
-                      chi2, dof, p)};
+                      test.chi2, test.points, test.p())};
 }
 
 // The two references against each other, point by point, with no theory in between: a
@@ -273,13 +269,11 @@ StudyClaim flux_equals_dsmc_claim(const CorrelationStudy& S) {
       }
     }
   }
-  const double chi2 = test.chi2, p = test.p();
-  const int dof = test.points;
   return {"flux-shuffled gas: contact moments equal the DSMC gas's at the same points",
-          verdict_p(p), Measurement{dof > 0 ? chi2 / dof : 0.0, 0.0},
+          verdict_p(test.p()), Measurement{test.chi2_per_dof(), 0.0},
           fmt::format("chi2/dof of normal scores of the differences over P, Q, omega/omega_E, Y, "
                       "chi2 = {:.1f}, dof = {}, p = {:.2g}",
-                      chi2, dof, p)};
+                      test.chi2, test.points, test.p())};
 }
 
 void control_claims(CorrelationStudy& S) {

@@ -30,6 +30,7 @@ struct GlobalTest {
   /// Upper tail probability of chi2 for `points` degrees of freedom.
   double p() const;
   bool holds() const { return points > 0 && p() >= k_global_p_threshold; }
+  double chi2_per_dof() const { return points > 0 ? chi2 / points : 0.0; }
 };
 
 /// True when observed + 3σ_observed < bound (a claim of the form "less than bound").
