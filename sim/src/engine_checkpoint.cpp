@@ -36,6 +36,7 @@ void Engine<D, Observer>::checkpoint_members(Self& self, Archive& archive) {
   static_assert(std::is_trivially_copyable_v<Observer>, "observers are saved as bytes");
   archive(self.part_, self.id_, self.ev_, self.last_collision_time_);
   CellMembers::checkpoint_members(self.members_, archive);
+  archive(self.cell_links_);
   archive(self.center_);
   NeighbourLists::checkpoint_members(self.lists_, archive);
   EventCalendar::checkpoint_members(self.calendar_, archive);
@@ -53,8 +54,9 @@ template <int D, class Observer>
 void Engine<D, Observer>::restore_state(CheckpointReader& in) {
   checkpoint_members(*this, in);
   const std::size_t n = static_cast<std::size_t>(n_);
-  if (part_.size() != n || id_.size() != n || ev_.size() != n || last_collision_time_.size() != n ||
-      (neighbour_lists_ && center_.size() != n * D))
+  if (part_.size() != n + 1 || id_.size() != n || ev_.size() != n ||
+      last_collision_time_.size() != n || (neighbour_lists_ && center_.size() != n * D) ||
+      cell_links_.size() != (links_in_records_ ? 0 : n + 1))
     in.fail("engine arrays of another size than the parameters' N");
 }
 
@@ -84,9 +86,10 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   }
   std::fill(seen.begin(), seen.end(), 0);
   if (!members_.shaped_for(cells_, n)) in.fail("cell lists of another size than the grid's");
+  if (next_in_cell(n) != n) in.fail("the end of the cell lists does not link to itself");
   for (std::size_t c = 0; c < cells_; ++c)  // a list that loops meets a particle seen before
-    for (std::int32_t i = members_.first(static_cast<int>(c)); i != n; i = members_.next(i)) {
-      if (i < 0 || i > n || seen[i] || part_[i].cell != static_cast<int>(c))
+    for (std::int32_t i = members_.first(static_cast<int>(c)); i != n; i = next_in_cell(i)) {
+      if (i < 0 || i > n || seen[i] || ev_[i].cell != static_cast<int>(c))
         in.fail("cell " + std::to_string(c) + " lists a particle that is out of range, listed "
                 "twice, or filed in another cell");
       seen[i] = 1;
@@ -100,7 +103,7 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
       particle(i, "has a local time that is not finite or lies after the clock");
     double shift2 = 0;
     int x[D];
-    coords_(p.cell, x);
+    coords_(ev_[i].cell, x);
     for (int a = 0; a < D; ++a) {
       if (!std::isfinite(p.r[a]) || !std::isfinite(p.v[a]))
         particle(i, "has a position or velocity that is not finite");

@@ -210,7 +210,7 @@ template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::stencil_of(std::int32_t i, const int* x,
                                                                    int* stencil) const {
   if (interior_cell(x)) {
-    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = part_[i].cell + stencil_offset_[s];
+    for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = ev_[i].cell + stencil_offset_[s];
   } else {
     neighbour_cells<D>(x, cells_per_side_, stencil);
   }

@@ -17,7 +17,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
                      box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
   shell_ = neighbour_lists_ ? k_shell : 0.0;
   const std::size_t n = static_cast<std::size_t>(n_);
-  assign_in_huge_pages(part_, n, Particle{});
+  assign_in_huge_pages(part_, n + 1, Particle{});
   id_.resize(n);
   for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
   assign_in_huge_pages(ev_, n, EventData{});
@@ -27,12 +27,19 @@ Engine<D, Observer>::Engine(const Parameters& p)
                ? list_cutoff()
                : std::max(1.0, std::pow(occupancy / p.density, 1.0 / static_cast<double>(D)));
   };
-  // Whether the engine's data (with the cells for the cache: a list head each, and a link and a
-  // candidate slot per particle) outgrow the cache.
-  const double cells_in_cache = std::pow(std::floor(box_ / cell_width_for(k_cell_occupancy<D>)), D);
-  outgrows_cache_ = static_cast<double>(memory_bytes() + EventCalendar::memory_bytes_for(n_)) +
-                        4.0 * cells_in_cache + 8.0 * static_cast<double>(n_) >
-                    static_cast<double>(k_cache_bytes);
+  // Whether the engine's data (with the cells for the cache, their links unless in the records,
+  // and a candidate slot per particle) outgrow the cache.
+  const auto cells_in_cache = static_cast<std::size_t>(
+      std::pow(std::floor(box_ / cell_width_for(k_cell_occupancy<D>)), D));
+  const bool links_in_records_in_cache = !neighbour_lists_ && k_links_in_records<D, false>;
+  outgrows_cache_ = memory_bytes() + EventCalendar::memory_bytes_for(n_) +
+                        CellMembers::memory_bytes_for(cells_in_cache) +
+                        (links_in_records_in_cache ? 0 : n + 1) * sizeof(std::int32_t) +
+                        n * sizeof(std::int32_t) >
+                    k_cache_bytes;
+  links_in_records_ = outgrows_cache_ ? !neighbour_lists_ && k_links_in_records<D, true>
+                                      : links_in_records_in_cache;
+  if (!links_in_records_) assign_in_huge_pages(cell_links_, n + 1, n_);
   const double width_target = cell_width_for(outgrows_cache_ ? k_cell_occupancy_beyond_cache<D>
                                                              : k_cell_occupancy<D>);
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));
@@ -182,7 +189,7 @@ bool Engine<D, Observer>::relax(double collisions_per_particle, const std::funct
     }
   scale_velocities(std::sqrt(static_cast<double>(n_) * D / sum));
   clock_ = InternalClock{};
-  for (auto& particle : part_) particle.t = 0;
+  for (auto& particle : particles()) particle.t = 0;
   std::fill(last_collision_time_.begin(), last_collision_time_.end(), -k_inf);
   collisions_ = events_ = 0;
   micro_run_ = 0;
@@ -232,7 +239,7 @@ template <int D, class Observer>
 void Engine<D, Observer>::remove_momentum_drift() {
   constexpr double k_drift_fraction = 1e-10;
   double mean[D] = {};
-  for (const auto& particle : part_)
+  for (const auto& particle : particles())
     for (int a = 0; a < D; ++a) mean[a] += particle.v[a];
   double drift_u2 = 0;
   for (int a = 0; a < D; ++a) {
@@ -240,7 +247,7 @@ void Engine<D, Observer>::remove_momentum_drift() {
     drift_u2 += n_ * mean[a] * mean[a];
   }
   if (!(drift_u2 > k_drift_fraction * sum_velocity_squared())) return;
-  for (auto& particle : part_)
+  for (auto& particle : particles())
     for (int a = 0; a < D; ++a) particle.v[a] -= mean[a];
 }
 
@@ -260,7 +267,7 @@ void Engine<D, Observer>::resync() {
     scale_velocities(factor);
   }
   for (auto& t : last_collision_time_) t = clock_.restarted(t, factor);
-  for (auto& particle : part_) particle.t = 0;
+  for (auto& particle : particles()) particle.t = 0;
   clock_.restart(factor);
   rebuild_events();
 }
@@ -282,8 +289,8 @@ void Engine<D, Observer>::sort_by_cell() {
     std::vector<std::uint64_t> key(n);
     for (std::size_t i = 0; i < n; ++i) {
       int x[D];
-      coords_(part_[i].cell, x);
-      key[i] = outgrows_cache_ ? hilbert_index<D>(x, bits) : static_cast<std::uint64_t>(part_[i].cell);
+      coords_(ev_[i].cell, x);
+      key[i] = outgrows_cache_ ? hilbert_index<D>(x, bits) : static_cast<std::uint64_t>(ev_[i].cell);
       order[i] = static_cast<std::int32_t>(i);
     }
     std::sort(order.begin(), order.end(), [&key](std::int32_t a, std::int32_t b) {
@@ -295,6 +302,7 @@ void Engine<D, Observer>::sort_by_cell() {
   for (std::size_t start = 0; start < n; ++start) {
     if (order[start] < 0) continue;
     const Particle particle = part_[start];
+    const EventData event = ev_[start];  // its cell; the rest is predicted again
     const double last = last_collision_time_[start];
     const std::int32_t id = id_[start];
     for (std::size_t k = start;;) {
@@ -302,19 +310,21 @@ void Engine<D, Observer>::sort_by_cell() {
       order[k] = -1;  // placed
       if (from == start) {
         part_[k] = particle;
+        ev_[k] = event;
         last_collision_time_[k] = last;
         id_[k] = id;
         break;
       }
       part_[k] = part_[from];
+      ev_[k] = ev_[from];
       last_collision_time_[k] = last_collision_time_[from];
       id_[k] = id_[from];
       k = from;
     }
   }
   // Filed from the last particle to the first: each cell lists its members in increasing index.
-  members_.reset(cells_, n_);
-  for (std::int32_t i = n_ - 1; i >= 0; --i) file_in_cell(i, part_[i].cell);
+  reset_cells();
+  for (std::int32_t i = n_ - 1; i >= 0; --i) file_in_cell(i, ev_[i].cell);
 }
 
 template <int D, class Observer>
@@ -326,7 +336,7 @@ void Engine<D, Observer>::rebuild_events() {
         if (x < 0) x += box_;
         if (x >= box_) x -= box_;
       }
-      part_[i].cell = cell_of_position(part_[i].r);
+      ev_[i].cell = cell_of_position(part_[i].r);
     }
   sort_by_cell();
   if (neighbour_lists_) build_neighbour_lists();
@@ -336,7 +346,11 @@ void Engine<D, Observer>::rebuild_events() {
   double width = calendar_.bucket_width();
   for (int pass = 0; pass < 2; ++pass) {
     calendar_.reset(n_, clock_.now, width, buckets);
-    for (std::int32_t i = 0; i < n_; ++i) predict(i);
+    for (std::int32_t i = 0; i < n_; ++i)
+      if (outgrows_cache_)
+        predict<true>(i);  // the cells' links where predict<true> looks for them
+      else
+        predict<false>(i);
     double sum = 0;
     std::int32_t finite = 0;
     for (std::int32_t i = 0; i < n_; ++i) {
@@ -361,9 +375,18 @@ int Engine<D, Observer>::cell_of_position(const double* r) const {
   return cell_index<D>(x, cells_per_side_);
 }
 
+// Empty cells for particles 0 .. n-1, their lists ended by n.
+template <int D, class Observer>
+void Engine<D, Observer>::reset_cells() {
+  if (links_in_records_)
+    members_.reset(cells_, n_, record_links());
+  else
+    members_.reset(cells_, n_, cell_links_);
+}
+
 template <int D, class Observer>
 void Engine<D, Observer>::build_cells() {
-  members_.reset(cells_, n_);
+  reset_cells();
   for (std::int32_t i = n_ - 1; i >= 0; --i) {
     for (int a = 0; a < D; ++a) {
       double& x = part_[i].r[a];
@@ -376,26 +399,32 @@ void Engine<D, Observer>::build_cells() {
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
-  part_[i].cell = c;
-  members_.add(i, c);
+  ev_[i].cell = c;
+  if (links_in_records_)
+    members_.add(record_links(), i, c);
+  else
+    members_.add(cell_links_, i, c);
 }
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
-  members_.remove(i, part_[i].cell);
+  if (links_in_records_)
+    members_.remove(record_links(), i, ev_[i].cell);
+  else
+    members_.remove(cell_links_, i, ev_[i].cell);
 }
 
 template <int D, class Observer>
 double Engine<D, Observer>::sum_velocity_squared() const {
   double sum = 0;
-  for (const auto& particle : part_)
+  for (const auto& particle : particles())
     for (double v : particle.v) sum += v * v;
   return sum;
 }
 
 template <int D, class Observer>
 void Engine<D, Observer>::scale_velocities(double factor) {
-  for (auto& particle : part_)
+  for (auto& particle : particles())
     for (double& v : particle.v) v *= factor;
   sum_u2_ = sum_velocity_squared();
 }
@@ -433,10 +462,10 @@ double Engine<D, Observer>::min_pair_distance() const {
   int stencil[stencil_size<D>()];
   for (std::int32_t i = 0; i < n_; ++i) {
     int x[D];
-    coords_(part_[i].cell, x);
+    coords_(ev_[i].cell, x);
     neighbour_cells<D>(x, cells_per_side_, stencil);
     for (int s = 0; s < stencil_size<D>(); ++s)
-      for (std::int32_t j = members_.first(stencil[s]); j != members_.end(); j = members_.next(j)) {
+      for (std::int32_t j = members_.first(stencil[s]); j != members_.end(); j = next_in_cell(j)) {
         if (j <= i) continue;
         double d2 = 0;
         for (int a = 0; a < D; ++a) {

@@ -25,15 +25,16 @@ size = struct.unpack_from("<Q", data, at)[0]
 payload = at + 8
 sample = int(re.search(rb"^layout = .* sample (\d+)( |$)", data[:at], re.M).group(1))
 # The run's part (done, wall seconds, the samples, the snapshot count: no snapshots here), then
-# the engine's, which opens with the particle array's length and particle 0's record.
+# the engine's, which opens with the record array's length (a record per particle and one that
+# ends the cells' lists) and particle 0's record.
 samples = struct.unpack_from("<Q", data, payload + 16)[0]
 engine = payload + 16 + 8 + samples * sample + 8
-assert struct.unpack_from("<Q", data, engine)[0] == 400, "layout of the payload not understood"
+assert struct.unpack_from("<Q", data, engine)[0] == 401, "layout of the payload not understood"
 record = engine + 8
 # The record's size (the engine's layout): the particles' original indices follow the records,
 # opening with their count.
 stride = next(b for b in range(48, 257, 16)
-              if struct.unpack_from("<Q", data, record + 400 * b)[0] == 400)
+              if struct.unpack_from("<Q", data, record + 401 * b)[0] == 400)
 x, y, vx, vy = struct.unpack_from("<4d", data, record)
 if what == "nan":
     struct.pack_into("<d", data, record, float("nan"))

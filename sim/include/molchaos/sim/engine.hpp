@@ -172,9 +172,13 @@ class Engine {
   template <bool Wrap>
   [[gnu::always_inline]] std::int32_t keep_neighbours(std::int32_t i, std::int32_t* cand,
                                                       std::int32_t count, std::int32_t lower) const;
-  template <int Count, int Unrolled = 1>
+  // The members of the Count cells, to candidates_; InRecords: links_in_records_.
+  template <int Count, int Unrolled, bool InRecords>
   [[gnu::always_inline]] std::int32_t gather(const int* cells) {
-    return members_.gather<Count, Unrolled>(cells, candidates_.data());
+    if constexpr (InRecords)
+      return members_.gather<Count, Unrolled>(record_links(), cells, candidates_.data());
+    else
+      return members_.gather<Count, Unrolled>(cell_links_, cells, candidates_.data());
   }
   template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
@@ -193,6 +197,7 @@ class Engine {
   void remove_momentum_drift();
   void rebuild_events();
   void sort_by_cell();
+  void reset_cells();
   void build_cells();
   int cell_of_position(const double* r) const;
   [[gnu::always_inline]] void file_in_cell(std::int32_t i, int c);
@@ -224,24 +229,40 @@ class Engine {
     double v[D];            // velocity, internal units
     double t;               // local time (tau) of r
     std::uint32_t counter;  // bumped whenever v changes (lazy invalidation)
-    std::int32_t cell;
+    std::int32_t next;      // the next member of its cell, or n (CellMembers)
   };
+  // One record more than particles: the end of the cells' lists, which links to itself
+  // (CellMembers); particles() leaves it out.
   std::vector<Particle> part_;
+  std::span<Particle> particles() { return {part_.data(), static_cast<std::size_t>(n_)}; }
+  std::span<const Particle> particles() const {
+    return {part_.data(), static_cast<std::size_t>(n_)};
+  }
   std::vector<std::int32_t> id_;  // the particle's original index (snapshots keep that order)
   // Per-particle pending event, one 32-byte record: the earliest predicted collision (time,
-  // partner, partner's counter at prediction) and the next bookkeeping event (cell crossing along
-  // cross_axis, or shell exit).
+  // partner, partner's counter at prediction), the next bookkeeping event (cell crossing along
+  // cross_axis, or shell exit), and the cell the particle is filed in, which only its own events
+  // read (the partner's record has room for the cell list's link instead).
   struct EventData {
     double coll_time = std::numeric_limits<double>::infinity();
     double cross_time = std::numeric_limits<double>::infinity();
     std::int32_t partner = -1;
     std::uint32_t partner_counter = 0;
     std::int32_t cross_axis = 0;
+    std::int32_t cell = 0;  // the cell it is filed in (cells, or neighbour lists' centre cells)
   };
   std::vector<EventData> ev_;
   std::vector<double> last_collision_time_;  // tau of the particle's last collision
   // The cells' members, and scratch for a stencil's: room for every particle and one more.
   CellMembers members_;
+  // The links of the cells' lists (CellMembers): in the particle records (dilute cells,
+  // k_links_in_records in engine.cpp), else in an array of their own, n + 1.
+  bool links_in_records_ = false;
+  std::vector<std::int32_t> cell_links_;
+  RecordLinks<Particle> record_links() { return {part_.data()}; }
+  std::int32_t next_in_cell(std::int32_t i) const {
+    return links_in_records_ ? part_[i].next : cell_links_[i];
+  }
   std::size_t cells_ = 0;  // number of cells
   std::vector<std::int32_t> candidates_;
 
