@@ -378,10 +378,7 @@ int Engine<D, Observer>::cell_of_position(const double* r) const {
 // Empty cells for particles 0 .. n-1, their lists ended by n.
 template <int D, class Observer>
 void Engine<D, Observer>::reset_cells() {
-  if (links_in_records_)
-    members_.reset(cells_, n_, record_links());
-  else
-    members_.reset(cells_, n_, cell_links_);
+  with_cell_links([&](auto&& links) { members_.reset(cells_, n_, links); });
 }
 
 template <int D, class Observer>
@@ -400,18 +397,12 @@ void Engine<D, Observer>::build_cells() {
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::file_in_cell(std::int32_t i, int c) {
   ev_[i].cell = c;
-  if (links_in_records_)
-    members_.add(record_links(), i, c);
-  else
-    members_.add(cell_links_, i, c);
+  with_cell_links([&](auto&& links) { members_.add(links, i, c); });
 }
 
 template <int D, class Observer>
 [[gnu::always_inline]] inline void Engine<D, Observer>::cell_remove(std::int32_t i) {
-  if (links_in_records_)
-    members_.remove(record_links(), i, ev_[i].cell);
-  else
-    members_.remove(cell_links_, i, ev_[i].cell);
+  with_cell_links([&](auto&& links) { members_.remove(links, i, ev_[i].cell); });
 }
 
 template <int D, class Observer>

@@ -260,6 +260,15 @@ class Engine {
   bool links_in_records_ = false;
   std::vector<std::int32_t> cell_links_;
   RecordLinks<Particle> record_links() { return {part_.data()}; }
+  // f(links) with the cells' links where they lie: the one place that asks links_in_records_ at
+  // run time (the event loop's gathers know it from their template arguments).
+  template <class F>
+  [[gnu::always_inline]] void with_cell_links(F&& f) {
+    if (links_in_records_)
+      f(record_links());
+    else
+      f(cell_links_);
+  }
   std::int32_t next_in_cell(std::int32_t i) const {
     return links_in_records_ ? part_[i].next : cell_links_[i];
   }
