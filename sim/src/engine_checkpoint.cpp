@@ -87,6 +87,8 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   std::fill(seen.begin(), seen.end(), 0);
   if (!members_.shaped_for(cells_, n)) in.fail("cell lists of another size than the grid's");
   if (next_in_cell(n) != n) in.fail("the end of the cell lists does not link to itself");
+  if (neighbour_lists_ && !lists_.well_formed(n))
+    in.fail("neighbour lists of another size than N, or listing particles out of range");
   for (std::size_t c = 0; c < cells_; ++c)  // a list that loops meets a particle seen before
     for (std::int32_t i = members_.first(static_cast<int>(c)); i != n; i = next_in_cell(i)) {
       if (i < 0 || i > n || seen[i] || ev_[i].cell != static_cast<int>(c))

@@ -4,7 +4,8 @@
 # recomputed) is refused with exit status 2 and a line naming what is wrong, and nothing is
 # written: a run's wall time that is not finite, a position that is not finite or lies outside
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
-# another (out of the cell it is filed in). The untouched file resumes.
+# another (out of the cell it is filed in), a neighbour list of dense spheres naming a particle
+# that does not exist. The untouched file resumes.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -67,7 +68,36 @@ tamper overlap overlap
 refused_restart "--restart.*particle 1 lies outside the cell it is filed in" overlap
 tamper wall wall
 refused_restart "--restart.*wall time .* not a finite time >= 0" wall
+# Dense spheres (neighbour lists): the first neighbour of particle 0 made one far out of range.
+dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
+"$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||
+  fail "dense run with checkpoints"
+python3 - <<'PY' || fail "tamper the neighbour lists"
+import struct
+data = bytearray(open("dk", "rb").read())
+at = data.index(b"\n\n") + 2
+size = struct.unpack_from("<Q", data, at)[0]
+payload = at + 8
+# The lists open with their count of particles (int32 400), the lines per list (int32) and the
+# number of 64-byte lines (uint64 400 * lines); list 0's count, then its first neighbour, follow.
+found = [k for k in range(payload, payload + size - 16)
+         if struct.unpack_from("<i", data, k)[0] == 400
+         and 0 < struct.unpack_from("<i", data, k + 4)[0] <= 8
+         and struct.unpack_from("<Q", data, k + 8)[0] == 400 * struct.unpack_from("<i", data, k + 4)[0]]
+assert len(found) == 1, "layout of the neighbour lists not understood"
+first = found[0] + 16
+assert struct.unpack_from("<i", data, first)[0] > 0, "particle 0 has no neighbours"
+struct.pack_into("<i", data, first + 4, 1000000)
+h = 0xcbf29ce484222325
+for b in data[payload:payload + size]:
+    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+struct.pack_into("<Q", data, payload + size, h)
+open("dk_list", "wb").write(data)
+PY
+refused "--restart.*neighbour lists .* out of range" "${dense[@]}" --t-end 3 --out b.csv --restart dk_list
 [ ! -e b.csv ] || fail "an output written by a refused restart"
+"$bin" "${dense[@]}" --t-end 3 --out e.csv --restart dk 2>/dev/null ||
+  fail "the untouched dense checkpoint"
 "$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null ||
   fail "the untouched checkpoint"
 [ "$failures" -eq 0 ] || fail "$failures tampered checkpoints not refused as such"

@@ -3,6 +3,7 @@
 #define BOOST_TEST_MODULE sim_neighbour_lists
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
+#include <cstdint>
 #include <set>
 #include <vector>
 
@@ -50,18 +51,38 @@ BOOST_AUTO_TEST_CASE(random_adds_and_removes_match_a_set_model) {
   BOOST_TEST_MESSAGE("capacity after growth: " << lists.capacity());
 }
 
-BOOST_AUTO_TEST_CASE(reset_keeps_the_grown_capacity_and_empties_the_lists) {
+BOOST_AUTO_TEST_CASE(lists_fill_whole_cache_lines_and_reset_keeps_the_grown_capacity) {
   NeighbourLists lists;
-  lists.reset(3, 2);
-  lists.add(0, 1);  // fits, one slot to spare
-  BOOST_TEST(lists.capacity() == 2);
-  lists.add(0, 2);  // would use the spare slot: grows to 8 first
-  BOOST_TEST(lists.capacity() == 8);
-  BOOST_TEST((members(lists, 0) == std::set<std::int32_t>{1, 2}));
-  lists.reset(3, 0);
-  BOOST_TEST(lists.capacity() == 8);
+  BOOST_TEST(lists.capacity() == 0);
+  lists.reset(16, 2);
+  BOOST_TEST(lists.capacity() == 15);  // one line: the count and 15 slots
+  for (std::int32_t i = 0; i < 16; ++i) {
+    // The count and the first 15 slots share a 64-byte line.
+    BOOST_TEST(reinterpret_cast<std::uintptr_t>(lists.slots(i)) % 64 == sizeof(std::int32_t));
+  }
+  for (std::int32_t j = 1; j <= 14; ++j) lists.add(0, j);  // fits, one slot to spare
+  lists.add(1, 2);
+  BOOST_TEST(lists.capacity() == 15);
+  lists.add(0, 15);  // would use the spare slot: grows to two lines first
+  BOOST_TEST(lists.capacity() == 31);
+  BOOST_TEST(reinterpret_cast<std::uintptr_t>(lists.slots(2)) % 64 == sizeof(std::int32_t));
+  BOOST_TEST(lists.count(0) == 15);
+  BOOST_TEST((members(lists, 1) == std::set<std::int32_t>{2}));
+  BOOST_TEST(lists.well_formed(16));
+  BOOST_TEST(!lists.well_formed(17));
+  lists.reset(16, 0);
+  BOOST_TEST(lists.capacity() == 31);
   BOOST_TEST(lists.count(0) == 0);
   lists.add(2, 0);
   lists.clear(2);
   BOOST_TEST(lists.neighbours(2).empty());
+}
+
+BOOST_AUTO_TEST_CASE(a_member_out_of_range_is_not_well_formed) {
+  NeighbourLists lists;
+  lists.reset(4, 15);
+  lists.add(0, 3);
+  BOOST_TEST(lists.well_formed(4));
+  lists.slots(0)[0] = 4;  // as a tampered checkpoint could hold
+  BOOST_TEST(!lists.well_formed(4));
 }

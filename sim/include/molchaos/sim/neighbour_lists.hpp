@@ -1,14 +1,17 @@
 // Storage of the neighbour lists of dense spheres (Smallenburg, arXiv 2201.01100): for each
-// particle a block of `capacity` slots holding its neighbours (the particles whose shell centres
-// lie within the list cutoff of its own), then room. Every list keeps one spare slot, which
-// the engine's pair search may overwrite (it pads an odd list there). Which particles are
-// neighbours is the engine's business (cells, shell centres); this class only files them.
+// particle a block of whole cache lines holding its count, then its neighbours (the particles
+// whose shell centres lie within the list cutoff of its own), then room. A prediction reads the
+// count and the first 15 neighbours from one line, where a separate array of counts and blocks
+// at any offset cost two or three. Every list keeps one spare slot, which the engine's pair
+// search may overwrite (it pads an odd list there). Which particles are neighbours is the
+// engine's business (cells, shell centres); this class only files them.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "molchaos/sim/huge_pages.hpp"
@@ -17,76 +20,105 @@ namespace molchaos::sim {
 
 class NeighbourLists {
  public:
-  /// n empty lists of `capacity` slots (capacity kept from before when 0 is passed).
+  /// n empty lists of at least `capacity` slots (capacity kept from before when 0 is passed).
   void reset(std::int32_t n, int capacity) {
     n_ = n;
-    if (capacity > 0) capacity_ = capacity;
-    count_.assign(static_cast<std::size_t>(n), 0);
-    assign_in_huge_pages(slots_, static_cast<std::size_t>(n) * capacity_, std::int32_t{-1});
+    if (capacity > 0) set_lines((capacity + 1 + k_line_slots - 1) / k_line_slots);  // + the count
+    assign_in_huge_pages(lines_of_lists_, static_cast<std::size_t>(n) * lines_, Line{});
   }
 
+  /// Slots of a list: its neighbours and the room after them (0 before the first reset).
   int capacity() const { return capacity_; }
-  std::int32_t count(std::int32_t i) const { return count_[i]; }
+  std::int32_t count(std::int32_t i) const { return block(i)[0]; }
   /// i's capacity() slots: its count(i) neighbours, then room (at least one spare slot).
-  std::int32_t* slots(std::int32_t i) {
-    return slots_.data() + static_cast<std::size_t>(i) * capacity_;
-  }
-  const std::int32_t* slots(std::int32_t i) const {
-    return slots_.data() + static_cast<std::size_t>(i) * capacity_;
-  }
+  std::int32_t* slots(std::int32_t i) { return block(i) + 1; }
+  const std::int32_t* slots(std::int32_t i) const { return block(i) + 1; }
   std::span<const std::int32_t> neighbours(std::int32_t i) const {
-    return {slots(i), static_cast<std::size_t>(count_[i])};
+    return {slots(i), static_cast<std::size_t>(count(i))};
   }
+  /// The lines with i's count and first 31 neighbours.
   void prefetch(std::int32_t i) const {
-    __builtin_prefetch(&count_[i]);
-    __builtin_prefetch(slots(i));
-    __builtin_prefetch(slots(i) + 16);
+    __builtin_prefetch(block(i));
+    __builtin_prefetch(block(i) + k_line_slots);
   }
 
   /// Appends j to i's list; doubles every list's capacity when i's would lose its spare slot.
   void add(std::int32_t i, std::int32_t j) {
-    if (count_[i] + 1 >= capacity_) grow();
-    slots(i)[count_[i]++] = j;
+    if (count(i) + 1 >= capacity_) grow();
+    std::int32_t* b = block(i);
+    b[1 + b[0]++] = j;
   }
   /// Removes j from i's list (the last entry takes its place).
   void remove(std::int32_t i, std::int32_t j) {
-    std::int32_t* list = slots(i);
-    for (std::int32_t k = 0; k < count_[i]; ++k)
-      if (list[k] == j) {
-        list[k] = list[--count_[i]];
+    std::int32_t* b = block(i);
+    for (std::int32_t k = 1; k <= b[0]; ++k)
+      if (b[k] == j) {
+        b[k] = b[b[0]--];
         return;
       }
   }
   /// Empties i's list.
-  void clear(std::int32_t i) { count_[i] = 0; }
+  void clear(std::int32_t i) { block(i)[0] = 0; }
+
+  /// Whether these are n lists, each with its spare slot and only members in [0, n) (a
+  /// restored checkpoint's, before the engine reads them).
+  bool well_formed(std::int32_t n) const {
+    if (n != n_ || capacity_ == 0 ||
+        lines_of_lists_.size() != static_cast<std::size_t>(n) * static_cast<std::size_t>(lines_))
+      return false;
+    for (std::int32_t i = 0; i < n; ++i) {
+      if (count(i) < 0 || count(i) + 1 > capacity()) return false;
+      for (const std::int32_t j : neighbours(i))
+        if (j < 0 || j >= n) return false;
+    }
+    return true;
+  }
 
   /// Every member, for checkpoints (checkpoint.hpp). Self: const NeighbourLists to write,
   /// NeighbourLists to read.
   template <class Self, class Archive>
   static void checkpoint_members(Self& self, Archive& archive) {
-    archive(self.n_, self.capacity_, self.slots_, self.count_);
+    archive(self.n_, self.lines_, self.lines_of_lists_);
+    if constexpr (!std::is_const_v<Self>) self.set_lines(self.lines_);
   }
 
-  std::size_t memory_bytes() const {
-    return slots_.capacity() * sizeof(std::int32_t) + count_.capacity() * sizeof(std::int32_t);
-  }
+  std::size_t memory_bytes() const { return lines_of_lists_.capacity() * sizeof(Line); }
 
  private:
+  static constexpr int k_line_slots = 16;
+  static constexpr int k_max_lines = 1 << 20;
+  struct alignas(64) Line {
+    std::int32_t slot[k_line_slots] = {};
+  };
+  static_assert(sizeof(Line) == 64);
+
+  std::int32_t* block(std::int32_t i) {
+    return lines_of_lists_[static_cast<std::size_t>(i) * lines_].slot;
+  }
+  const std::int32_t* block(std::int32_t i) const {
+    return lines_of_lists_[static_cast<std::size_t>(i) * lines_].slot;
+  }
+
+  // (A restored count out of range leaves the capacity 0, which well_formed() refuses.)
+  void set_lines(int lines) {
+    lines_ = lines;
+    capacity_ = lines > 0 && lines <= k_max_lines ? lines * k_line_slots - 1 : 0;
+  }
+
   void grow() {
-    const int old = capacity_;
-    capacity_ = std::max(8, 2 * old);
-    std::vector<std::int32_t> grown;
-    assign_in_huge_pages(grown, static_cast<std::size_t>(n_) * capacity_, std::int32_t{-1});
-    for (std::int32_t i = 0; i < n_; ++i)
-      for (std::int32_t k = 0; k < count_[i]; ++k)
-        grown[static_cast<std::size_t>(i) * capacity_ + k] =
-            slots_[static_cast<std::size_t>(i) * old + k];
-    slots_.swap(grown);
+    const int old = lines_;
+    set_lines(2 * old);
+    std::vector<Line> grown;
+    assign_in_huge_pages(grown, static_cast<std::size_t>(n_) * lines_, Line{});
+    for (std::size_t i = 0; i < static_cast<std::size_t>(n_); ++i)
+      std::copy_n(&lines_of_lists_[i * old], old, &grown[i * lines_]);
+    lines_of_lists_.swap(grown);
   }
 
   std::int32_t n_ = 0;
-  int capacity_ = 0;
-  std::vector<std::int32_t> slots_, count_;
+  int lines_ = 0;     // per list
+  int capacity_ = 0;  // slots after the count: lines_ * k_line_slots - 1 (0 before a reset)
+  std::vector<Line> lines_of_lists_;
 };
 
 }  // namespace molchaos::sim
