@@ -87,6 +87,8 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   std::fill(seen.begin(), seen.end(), 0);
   if (!members_.shaped_for(cells_, n)) in.fail("cell lists of another size than the grid's");
   if (next_in_cell(n) != n) in.fail("the end of the cell lists does not link to itself");
+  if (!calendar_.well_formed(n))
+    in.fail("event calendar not filing each particle once, in the bucket of its time");
   if (neighbour_lists_ && !lists_.well_formed(n))
     in.fail("neighbour lists of another size than N, or listing particles out of range");
   for (std::size_t c = 0; c < cells_; ++c)  // a list that loops meets a particle seen before
@@ -121,6 +123,8 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
     const EventData& e = ev_[i];
     if (e.partner < -1 || e.partner >= n || std::isnan(e.coll_time) || std::isnan(e.cross_time))
       particle(i, "has a pending event with no such partner or no time");
+    if (calendar_.time(i) != std::min(e.coll_time, e.cross_time))
+      particle(i, "is filed in the event calendar at another time than its pending event's");
   }
   if (!(std::abs(sum_u2 - sum_u2_) <= 1e-6 * sum_u2))
     in.fail("kinetic energy " + std::to_string(sum_u2_) + " differs from the velocities' " +

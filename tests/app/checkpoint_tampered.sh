@@ -4,8 +4,9 @@
 # recomputed) is refused with exit status 2 and a line naming what is wrong, and nothing is
 # written: a run's wall time that is not finite, a position that is not finite or lies outside
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
-# another (out of the cell it is filed in), a neighbour list of dense spheres naming a particle
-# that does not exist. The untouched file resumes.
+# another (out of the cell it is filed in), a broken link or a changed time in the event
+# calendar, a neighbour list of dense spheres naming a particle that does not exist. The
+# untouched file resumes.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -14,13 +15,13 @@ enter_scratch_folder
 args=(simulate --particles 400 --density 0.1 --restitution 0.9 --quiet)
 "$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
   fail "run with checkpoints"
-# tamper OUT WHAT: ck with particle 0's record edited (x, y, vx, vy as doubles) and the checksum
-# recomputed.
+# tamper OUT WHAT [IN]: IN (ck) with particle 0's record edited (x, y, vx, vy as doubles), or its
+# calendar entry, or its neighbour list, and the checksum recomputed.
 tamper() {
-  python3 - "$1" "$2" <<'PY' || fail "tamper $2"
+  python3 - "$1" "$2" "${3:-ck}" <<'PY' || fail "tamper $2"
 import re, struct, sys
-out, what = sys.argv[1], sys.argv[2]
-data = bytearray(open("ck", "rb").read())
+out, what, source = sys.argv[1], sys.argv[2], sys.argv[3]
+data = bytearray(open(source, "rb").read())
 at = data.index(b"\n\n") + 2                      # the head ends with an empty line
 size = struct.unpack_from("<Q", data, at)[0]
 payload = at + 8
@@ -47,6 +48,28 @@ elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
 elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
     struct.pack_into("<2d", data, record + stride, x, y)
+elif what == "list":  # dense spheres: particle 0's first neighbour made one far out of range.
+    # The lists open with their count of particles (int32 400), the lines per list (int32) and
+    # the number of 64-byte lines (uint64 400 * lines); list 0's count, then its first neighbour.
+    found = [k for k in range(engine, payload + size - 16)
+             if struct.unpack_from("<i", data, k)[0] == 400
+             and 0 < struct.unpack_from("<i", data, k + 4)[0] <= 8
+             and struct.unpack_from("<Q", data, k + 8)[0] == 400 * struct.unpack_from("<i", data, k + 4)[0]]
+    assert len(found) == 1, "layout of the neighbour lists not understood"
+    assert struct.unpack_from("<i", data, found[0] + 16)[0] > 0, "particle 0 has no neighbours"
+    struct.pack_into("<i", data, found[0] + 20, 1000000)
+else:  # particle 0's entry in the event calendar, found by its bucket count and mask (int64 B,
+    # B - 1: 2048 buckets for 400 particles), then the current bucket, the cycle's start, the
+    # filed count and the entries' count (400); an entry is its time, bucket, next and previous.
+    buckets = data.index(struct.pack("<qq", 2048, 2047), engine)
+    entry = buckets + 16 + 24 + 8
+    assert struct.unpack_from("<Q", data, entry - 8)[0] == 400, "layout of the calendar not understood"
+    if what == "calendar_link":
+        struct.pack_into("<i", data, entry + 12, 1000000)
+    elif what == "calendar_time":  # a time a little later than its pending event's
+        t = struct.unpack_from("<d", data, entry)[0]
+        assert t < float("inf"), "particle 0 has no pending event"
+        struct.pack_into("<d", data, entry, t * (1 + 1e-12))
 h = 0xcbf29ce484222325
 for b in data[payload:payload + size]:
     h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
@@ -68,32 +91,15 @@ tamper overlap overlap
 refused_restart "--restart.*particle 1 lies outside the cell it is filed in" overlap
 tamper wall wall
 refused_restart "--restart.*wall time .* not a finite time >= 0" wall
+tamper calendar_link calendar_link
+refused_restart "--restart.*event calendar not filing each particle once" calendar_link
+tamper calendar_time calendar_time
+refused_restart "--restart.*particle 0 is filed in the event calendar at another time" calendar_time
 # Dense spheres (neighbour lists): the first neighbour of particle 0 made one far out of range.
 dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
 "$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||
   fail "dense run with checkpoints"
-python3 - <<'PY' || fail "tamper the neighbour lists"
-import struct
-data = bytearray(open("dk", "rb").read())
-at = data.index(b"\n\n") + 2
-size = struct.unpack_from("<Q", data, at)[0]
-payload = at + 8
-# The lists open with their count of particles (int32 400), the lines per list (int32) and the
-# number of 64-byte lines (uint64 400 * lines); list 0's count, then its first neighbour, follow.
-found = [k for k in range(payload, payload + size - 16)
-         if struct.unpack_from("<i", data, k)[0] == 400
-         and 0 < struct.unpack_from("<i", data, k + 4)[0] <= 8
-         and struct.unpack_from("<Q", data, k + 8)[0] == 400 * struct.unpack_from("<i", data, k + 4)[0]]
-assert len(found) == 1, "layout of the neighbour lists not understood"
-first = found[0] + 16
-assert struct.unpack_from("<i", data, first)[0] > 0, "particle 0 has no neighbours"
-struct.pack_into("<i", data, first + 4, 1000000)
-h = 0xcbf29ce484222325
-for b in data[payload:payload + size]:
-    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
-struct.pack_into("<Q", data, payload + size, h)
-open("dk_list", "wb").write(data)
-PY
+tamper dk_list list dk
 refused "--restart.*neighbour lists .* out of range" "${dense[@]}" --t-end 3 --out b.csv --restart dk_list
 [ ! -e b.csv ] || fail "an output written by a refused restart"
 "$bin" "${dense[@]}" --t-end 3 --out e.csv --restart dk 2>/dev/null ||

@@ -261,7 +261,8 @@ BOOST_AUTO_TEST_CASE(csv_reader_rejects_truncated_and_corrupt_files) {
 
 BOOST_AUTO_TEST_CASE(event_calendar_always_yields_the_earliest_event) {
   // Random schedule/reschedule/pop sequences against a brute-force minimum, including events far
-  // beyond the bucket window, infinite times and ties.
+  // beyond the bucket window, infinite times and ties; through all of them the calendar stays
+  // well formed, as a restored checkpoint's must be.
   Rng rng(5);
   const std::int32_t n = 300;
   EventCalendar calendar;
@@ -272,7 +273,10 @@ BOOST_AUTO_TEST_CASE(event_calendar_always_yields_the_earliest_event) {
     times[i] = now + (i % 17 == 0 ? 1e6 : rng.uniform());
     calendar.update(i, times[i]);
   }
+  BOOST_TEST(calendar.well_formed(n));
+  BOOST_TEST(!calendar.well_formed(n + 1));
   for (int step = 0; step < 100000; ++step) {
+    if (step % 1000 == 0) BOOST_REQUIRE(calendar.well_formed(n));
     const auto [t, i] = calendar.top();
     double expected = std::numeric_limits<double>::infinity();
     for (double x : times) expected = std::min(expected, x);

@@ -91,6 +91,44 @@ class EventCalendar {
 
   void prefetch(std::int32_t i) const { __builtin_prefetch(&e_[static_cast<std::size_t>(i)]); }
 
+  /// Whether this is a calendar of particles 0..n-1 that top() pops in time order (a restored
+  /// checkpoint's, before the engine runs it): every particle filed once, in the bucket its time
+  /// belongs to (the current one if its time has passed) or, beyond the cycle, in the overflow
+  /// list; lists linked both ways and the bitmap marking exactly the non-empty buckets.
+  bool well_formed(std::int32_t n) const {
+    if (n != n_ || e_.size() != static_cast<std::size_t>(n) || buckets_ < 64 ||
+        buckets_ > (std::int64_t{1} << 40) || (buckets_ & (buckets_ - 1)) != 0 ||
+        mask_ != buckets_ - 1 || head_.size() != static_cast<std::size_t>(buckets_) ||
+        occupied_.size() != static_cast<std::size_t>(buckets_ / 64) || !(width_ > 0) ||
+        !std::isfinite(width_) || inv_width_ != 1.0 / width_ || !std::isfinite(origin_) ||
+        current_ < cycle_start_ || cycle_start_ < 0)
+      return false;
+    std::vector<char> seen(static_cast<std::size_t>(n), 0);
+    std::int64_t filed = 0;
+    // Walks the list from `head`, whose members must all be `where`; false if it is broken.
+    auto list_holds = [&](std::int32_t head, std::int32_t where) {
+      std::int32_t prev = -1;
+      for (std::int32_t k = head; k != -1; prev = k, k = e_[k].next) {
+        if (k < 0 || k >= n || seen[k] || e_[k].where != where || e_[k].prev != prev) return false;
+        seen[k] = 1;
+        const std::int64_t b = bucket_of(e_[k].time);
+        const bool in_cycle = b < cycle_start_ + buckets_;
+        if (where == k_in_overflow ? in_cycle
+                                   : !in_cycle || (std::max(b, current_) & mask_) != where)
+          return false;
+        filed += where != k_in_overflow;
+      }
+      return true;
+    };
+    for (std::int64_t s = 0; s < buckets_; ++s) {
+      const std::int32_t head = head_[static_cast<std::size_t>(s)];
+      const bool marked = (occupied_[static_cast<std::size_t>(s >> 6)] >> (s & 63)) & 1;
+      if (marked != (head != -1) || !list_holds(head, static_cast<std::int32_t>(s))) return false;
+    }
+    if (!list_holds(overflow_, k_in_overflow) || filed != filed_) return false;
+    return std::find(seen.begin(), seen.end(), 0) == seen.end();
+  }
+
   /// Every member, for checkpoints (checkpoint.hpp): a restored calendar pops the same events in
   /// the same order, ties included. Self: const EventCalendar to write, EventCalendar to read.
   template <class Self, class Archive>
