@@ -76,7 +76,13 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   };
   if (!std::isfinite(clock_.now) || clock_.now < 0)
     in.fail("internal clock not a finite time >= 0");
+  // theta = 0 ran for ever, theta < 0 ran time backwards.
+  if (!(clock_.theta > 0) || !std::isfinite(clock_.theta) || !std::isfinite(clock_.t_offset))
+    in.fail("clock's time unit theta not a finite number > 0, or its offset not finite");
   if (collisions_ > events_) in.fail("more collisions than events");
+  // A run is saved only while it goes on: not stopped, below the collapse and dead-lock counts.
+  if (stop_ || micro_run_ >= k_collapse_collisions || stalled_events_ >= k_stall_events)
+    in.fail("a run that has stopped, or counts at a collapse or dead-lock");
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
   for (std::int32_t i = 0; i < n; ++i) {
     const std::int32_t k = id_[i];
@@ -105,6 +111,8 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
     if (!seen[i]) particle(i, "is in no cell");
     if (!std::isfinite(p.t) || p.t > clock_.now)
       particle(i, "has a local time that is not finite or lies after the clock");
+    if (!(last_collision_time_[i] <= clock_.now))  // -inf before its first collision
+      particle(i, "has a last collision that is not a time or lies after the clock");
     double shift2 = 0;
     int x[D];
     coords_(ev_[i].cell, x);

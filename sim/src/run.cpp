@@ -111,6 +111,9 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     engine.restore_state(in);
     in.finish();
     engine.check_restored(in);  // a file from outside (a relaxed state here is this process's)
+    if (engine.time() < done - 1e-9 * std::max(1.0, std::abs(done)))
+      in.fail("engine's time " + message_number(engine.time()) +
+              " lies before the time the run had reached, " + message_number(done));
     // A new t_end keeps the sample grid below both ends: the samples taken stay valid.
     if (p.t_end != saved_t_end && !(engine.time() < p.t_end && done < p.t_end * (1 - 1e-12)))
       throw CheckpointError("checkpoint " + checkpoints.restart +

@@ -5,7 +5,7 @@
 # written: a run's wall time that is not finite, a position that is not finite or lies outside
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
 # another (out of the cell it is filed in), a broken link or a changed time in the event
-# calendar, a neighbour list of dense spheres naming a particle that does not exist. The
+# calendar, a clock's time unit of 0, -1 or half its value, a neighbour list of dense spheres naming a particle that does not exist. The
 # untouched file resumes.
 set -u
 bin=$(realpath "$1")
@@ -48,6 +48,17 @@ elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
 elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
     struct.pack_into("<2d", data, record + stride, x, y)
+elif what.startswith("theta"):  # the clock's time unit theta: 0, -1, or halved
+    # The clock (internal time, its offset, theta: 3 doubles) lies just before the kinetic energy
+    # the engine carries, the sum of the squared internal velocities, found by its value.
+    u2 = sum(struct.unpack_from("<d", data, record + k * stride + off)[0] ** 2
+             for k in range(400) for off in (16, 24))
+    found = [k for k in range(record + 401 * stride, payload + size - 8)
+             if abs(struct.unpack_from("<d", data, k)[0] - u2) <= 1e-9 * u2]
+    assert len(found) == 1, "layout of the clock not understood"
+    theta = struct.unpack_from("<d", data, found[0] - 8)[0]
+    new = {"theta_zero": 0.0, "theta_negative": -1.0, "theta_half": theta / 2}[what]
+    struct.pack_into("<d", data, found[0] - 8, new)
 elif what == "list":  # dense spheres: particle 0's first neighbour made one far out of range.
     # The lists open with their count of particles (int32 400), the lines per list (int32) and
     # the number of 64-byte lines (uint64 400 * lines); list 0's count, then its first neighbour.
@@ -95,6 +106,12 @@ tamper calendar_link calendar_link
 refused_restart "--restart.*event calendar not filing each particle once" calendar_link
 tamper calendar_time calendar_time
 refused_restart "--restart.*particle 0 is filed in the event calendar at another time" calendar_time
+tamper theta_zero theta_zero  # ran for ever
+refused_restart "--restart.*time unit theta not a finite number > 0" theta_zero
+tamper theta_negative theta_negative  # ran on with time running backwards
+refused_restart "--restart.*time unit theta not a finite number > 0" theta_negative
+tamper theta_half theta_half
+refused_restart "--restart.*engine's time .* lies before the time the run had reached" theta_half
 # Dense spheres (neighbour lists): the first neighbour of particle 0 made one far out of range.
 dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
 "$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||
