@@ -76,7 +76,7 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
   };
   if (!std::isfinite(clock_.now) || clock_.now < 0)
     in.fail("internal clock not a finite time >= 0");
-  // theta = 0 ran for ever, theta < 0 ran time backwards.
+  // theta = 0 ran for ever; theta < 0 ran to the run's end without a collision.
   if (!(clock_.theta > 0) || !std::isfinite(clock_.theta) || !std::isfinite(clock_.t_offset))
     in.fail("clock's time unit theta not a finite number > 0, or its offset not finite");
   if (collisions_ > events_) in.fail("more collisions than events");

@@ -5,8 +5,8 @@
 # written: a run's wall time that is not finite, a position that is not finite or lies outside
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
 # another (out of the cell it is filed in), a broken link or a changed time in the event
-# calendar, a clock's time unit of 0, -1 or half its value, a neighbour list of dense spheres naming a particle that does not exist. The
-# untouched file resumes.
+# calendar, a clock's time unit of 0, -1 or half its value, a neighbour list of dense spheres
+# naming a particle that does not exist. The untouched files resume.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -65,7 +65,8 @@ elif what == "list":  # dense spheres: particle 0's first neighbour made one far
     found = [k for k in range(engine, payload + size - 16)
              if struct.unpack_from("<i", data, k)[0] == 400
              and 0 < struct.unpack_from("<i", data, k + 4)[0] <= 8
-             and struct.unpack_from("<Q", data, k + 8)[0] == 400 * struct.unpack_from("<i", data, k + 4)[0]]
+             and struct.unpack_from("<Q", data, k + 8)[0]
+             == 400 * struct.unpack_from("<i", data, k + 4)[0]]
     assert len(found) == 1, "layout of the neighbour lists not understood"
     assert struct.unpack_from("<i", data, found[0] + 16)[0] > 0, "particle 0 has no neighbours"
     struct.pack_into("<i", data, found[0] + 20, 1000000)
@@ -74,7 +75,8 @@ else:  # particle 0's entry in the event calendar, found by its bucket count and
     # filed count and the entries' count (400); an entry is its time, bucket, next and previous.
     buckets = data.index(struct.pack("<qq", 2048, 2047), engine)
     entry = buckets + 16 + 24 + 8
-    assert struct.unpack_from("<Q", data, entry - 8)[0] == 400, "layout of the calendar not understood"
+    assert struct.unpack_from("<Q", data, entry - 8)[0] == 400, \
+        "layout of the calendar not understood"
     if what == "calendar_link":
         struct.pack_into("<i", data, entry + 12, 1000000)
     elif what == "calendar_time":  # a time a little later than its pending event's
@@ -117,7 +119,8 @@ dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
 "$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||
   fail "dense run with checkpoints"
 tamper dk_list list dk
-refused "--restart.*neighbour lists .* out of range" "${dense[@]}" --t-end 3 --out b.csv --restart dk_list
+refused "--restart.*neighbour lists .* out of range" \
+  "${dense[@]}" --t-end 3 --out b.csv --restart dk_list
 [ ! -e b.csv ] || fail "an output written by a refused restart"
 "$bin" "${dense[@]}" --t-end 3 --out e.csv --restart dk 2>/dev/null ||
   fail "the untouched dense checkpoint"

@@ -67,7 +67,7 @@ class NeighbourLists {
         lines_of_lists_.size() != static_cast<std::size_t>(n) * static_cast<std::size_t>(lines_))
       return false;
     for (std::int32_t i = 0; i < n; ++i) {
-      if (count(i) < 0 || count(i) + 1 > capacity()) return false;
+      if (count(i) < 0 || count(i) >= capacity_) return false;  // and the spare slot
       for (const std::int32_t j : neighbours(i))
         if (j < 0 || j >= n) return false;
     }
@@ -99,7 +99,7 @@ class NeighbourLists {
     return lines_of_lists_[static_cast<std::size_t>(i) * lines_].slot;
   }
 
-  // (A restored count out of range leaves the capacity 0, which well_formed() refuses.)
+  // (A restored number of lines out of range leaves the capacity 0, which well_formed() refuses.)
   void set_lines(int lines) {
     lines_ = lines;
     capacity_ = lines > 0 && lines <= k_max_lines ? lines * k_line_slots - 1 : 0;
