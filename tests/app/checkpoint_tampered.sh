@@ -5,8 +5,9 @@
 # written: a run's wall time that is not finite, a position that is not finite or lies outside
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
 # another (out of the cell it is filed in), a broken link or a changed time in the event
-# calendar, a clock's time unit of 0, -1 or half its value, a neighbour list of dense spheres
-# naming a particle that does not exist. The untouched files resume.
+# calendar, a clock's time unit of 0, -1 or half its value, the shuffle's random generator all
+# zero, a neighbour list of dense spheres naming a particle that does not exist. The untouched
+# files resume.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -48,7 +49,8 @@ elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
 elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
     struct.pack_into("<2d", data, record + stride, x, y)
-elif what.startswith("theta"):  # the clock's time unit theta: 0, -1, or halved
+elif what.startswith("theta") or what == "rng_zero":  # the time unit theta: 0, -1 or halved;
+    # or the shuffle's generator (4 words) in its all-zero state
     # The clock (internal time, its offset, theta: 3 doubles) lies just before the kinetic energy
     # the engine carries, the sum of the squared internal velocities, found by its value.
     u2 = sum(struct.unpack_from("<d", data, record + k * stride + off)[0] ** 2
@@ -56,9 +58,12 @@ elif what.startswith("theta"):  # the clock's time unit theta: 0, -1, or halved
     found = [k for k in range(record + 401 * stride, payload + size - 8)
              if abs(struct.unpack_from("<d", data, k)[0] - u2) <= 1e-9 * u2]
     assert len(found) == 1, "layout of the clock not understood"
-    theta = struct.unpack_from("<d", data, found[0] - 8)[0]
-    new = {"theta_zero": 0.0, "theta_negative": -1.0, "theta_half": theta / 2}[what]
-    struct.pack_into("<d", data, found[0] - 8, new)
+    if what == "rng_zero":  # after the energy: the collision and event counts, the generator
+        data[found[0] + 24:found[0] + 56] = bytes(32)
+    else:
+        theta = struct.unpack_from("<d", data, found[0] - 8)[0]
+        new = {"theta_zero": 0.0, "theta_negative": -1.0, "theta_half": theta / 2}[what]
+        struct.pack_into("<d", data, found[0] - 8, new)
 elif what == "list":  # dense spheres: particle 0's first neighbour made one far out of range.
     # The lists open with their count of particles (int32 400), the lines per list (int32) and
     # the number of 64-byte lines (uint64 400 * lines); list 0's count, then its first neighbour.
@@ -114,6 +119,13 @@ tamper theta_negative theta_negative  # ran on with time running backwards
 refused_restart "--restart.*time unit theta not a finite number > 0" theta_negative
 tamper theta_half theta_half
 refused_restart "--restart.*engine's time .* lies before the time the run had reached" theta_half
+# The paper's shuffle with its generator all zero (a run that never ended).
+shuffled=(simulate --particles 400 --density 0.1 --restitution 0.9 --randomize paper --quiet)
+"$bin" "${shuffled[@]}" --t-end 20 --out p.csv --checkpoint pk --checkpoint-interval 5 \
+  2>/dev/null || fail "shuffled run with checkpoints"
+tamper pk_rng rng_zero pk
+refused "--restart.*random generator in the all-zero state" \
+  "${shuffled[@]}" --t-end 30 --out b.csv --restart pk_rng
 # Dense spheres (neighbour lists): the first neighbour of particle 0 made one far out of range.
 dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
 "$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||

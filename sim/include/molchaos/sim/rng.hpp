@@ -50,6 +50,12 @@ class Rng {
     return radius * std::cos(angle);
   }
 
+  /// False for the all-zero state, which xoshiro never leaves (every draw 0), or a spare normal
+  /// that is not finite: a restored checkpoint's generator is checked with it.
+  bool well_formed() const {
+    return (state_[0] | state_[1] | state_[2] | state_[3]) != 0 && std::isfinite(spare_);
+  }
+
  private:
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   static std::uint64_t splitmix64(std::uint64_t& x) {
