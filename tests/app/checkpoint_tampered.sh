@@ -17,7 +17,8 @@ args=(simulate --particles 400 --density 0.1 --restitution 0.9 --quiet)
 "$bin" "${args[@]}" --t-end 20 --out a.csv --checkpoint ck --checkpoint-interval 5 2>/dev/null ||
   fail "run with checkpoints"
 # tamper OUT WHAT [IN]: IN (ck) with particle 0's record edited (x, y, vx, vy as doubles), or its
-# calendar entry, or its neighbour list, and the checksum recomputed.
+# calendar entry or neighbour list, or the clock or the shuffle's generator, and the checksum
+# recomputed.
 tamper() {
   python3 - "$1" "$2" "${3:-ck}" <<'PY' || fail "tamper $2"
 import re, struct, sys
@@ -49,18 +50,18 @@ elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
 elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
     struct.pack_into("<2d", data, record + stride, x, y)
-elif what.startswith("theta") or what == "rng_zero":  # the time unit theta: 0, -1 or halved;
-    # or the shuffle's generator (4 words) in its all-zero state
-    # The clock (internal time, its offset, theta: 3 doubles) lies just before the kinetic energy
-    # the engine carries, the sum of the squared internal velocities, found by its value.
+elif what.startswith("theta") or what == "rng_zero":
+    # The clock (internal time, its offset, its time unit theta: 3 doubles) lies just before the
+    # kinetic energy the engine carries (the sum of the squared internal velocities, found by its
+    # value); the collision and event counts and the shuffle's generator (4 words) follow it.
     u2 = sum(struct.unpack_from("<d", data, record + k * stride + off)[0] ** 2
              for k in range(400) for off in (16, 24))
     found = [k for k in range(record + 401 * stride, payload + size - 8)
              if abs(struct.unpack_from("<d", data, k)[0] - u2) <= 1e-9 * u2]
     assert len(found) == 1, "layout of the clock not understood"
-    if what == "rng_zero":  # after the energy: the collision and event counts, the generator
+    if what == "rng_zero":  # the all-zero state
         data[found[0] + 24:found[0] + 56] = bytes(32)
-    else:
+    else:  # theta 0, -1 or halved
         theta = struct.unpack_from("<d", data, found[0] - 8)[0]
         new = {"theta_zero": 0.0, "theta_negative": -1.0, "theta_half": theta / 2}[what]
         struct.pack_into("<d", data, found[0] - 8, new)
