@@ -58,7 +58,7 @@ class NeighbourLists {
     std::int32_t k = 1;
 #if defined(__SSE2__)
     // The first line's 15 members compared at once: no loop whose end the branch predictor would
-    // have to guess (a shell exit strikes its particle out of about 13 lists).
+    // have to guess (a shell exit strikes its particle out of each old neighbour's list).
     const __m128i key = _mm_set1_epi32(j);
     int found = 0;
     for (int q = 0; q < 4; ++q) {
@@ -66,7 +66,7 @@ class NeighbourLists {
       found |= _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(four, key))) << (4 * q);
     }
     // Members only: slot 0 holds the count, slots after the count hold stale entries.
-    const int members = b[0] < k_line_slots - 1 ? b[0] : k_line_slots - 1;
+    const int members = b[0] < k_line_slots - 1 ? b[0] : k_line_slots - 1;  // of the first line
     found &= ((2 << members) - 1) & ~1;
     if (found != 0) {
       k = __builtin_ctz(static_cast<unsigned>(found));
