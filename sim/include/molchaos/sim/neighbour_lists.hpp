@@ -11,7 +11,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -27,12 +26,12 @@ class NeighbourLists {
   /// n empty lists of at least `capacity` slots (capacity kept from before when 0 is passed).
   void reset(std::int32_t n, int capacity) {
     n_ = n;
-    if (capacity > 0) set_lines((capacity + 1 + k_line_slots - 1) / k_line_slots);  // + the count
+    if (capacity > 0) lines_ = (capacity + 1 + k_line_slots - 1) / k_line_slots;  // + the count
     assign_in_huge_pages(lines_of_lists_, static_cast<std::size_t>(n) * lines_, Line{});
   }
 
   /// Slots of a list: its neighbours and the room after them (0 before the first reset).
-  int capacity() const { return capacity_; }
+  int capacity() const { return lines_ == 0 ? 0 : lines_ * k_line_slots - 1; }
   std::int32_t count(std::int32_t i) const { return block(i)[0]; }
   /// i's capacity() slots: its count(i) neighbours, then room (at least one spare slot).
   std::int32_t* slots(std::int32_t i) { return block(i) + 1; }
@@ -48,7 +47,7 @@ class NeighbourLists {
 
   /// Appends j to i's list; doubles every list's capacity when i's would lose its spare slot.
   void add(std::int32_t i, std::int32_t j) {
-    if (count(i) + 1 >= capacity_) grow();
+    if (count(i) + 2 >= lines_ * k_line_slots) grow();  // count + 1 >= capacity()
     std::int32_t* b = block(i);
     b[1 + b[0]++] = j;
   }
@@ -87,11 +86,11 @@ class NeighbourLists {
   /// Whether these are n lists, each with its spare slot and only members in [0, n) (a
   /// restored checkpoint's, before the engine reads them).
   bool well_formed(std::int32_t n) const {
-    if (n != n_ || capacity_ == 0 ||
+    if (n != n_ || lines_ < 1 || lines_ > k_max_lines ||
         lines_of_lists_.size() != static_cast<std::size_t>(n) * static_cast<std::size_t>(lines_))
       return false;
     for (std::int32_t i = 0; i < n; ++i) {
-      if (count(i) < 0 || count(i) >= capacity_) return false;  // and the spare slot
+      if (count(i) < 0 || count(i) >= capacity()) return false;  // and the spare slot
       for (const std::int32_t j : neighbours(i))
         if (j < 0 || j >= n) return false;
     }
@@ -103,14 +102,13 @@ class NeighbourLists {
   template <class Self, class Archive>
   static void checkpoint_members(Self& self, Archive& archive) {
     archive(self.n_, self.lines_, self.lines_of_lists_);
-    if constexpr (!std::is_const_v<Self>) self.set_lines(self.lines_);
   }
 
   std::size_t memory_bytes() const { return lines_of_lists_.capacity() * sizeof(Line); }
 
  private:
   static constexpr int k_line_slots = 16;
-  static constexpr int k_max_lines = 1 << 20;
+  static constexpr int k_max_lines = 1 << 20;  // a restored number beyond it is refused
   struct alignas(64) Line {
     std::int32_t slot[k_line_slots] = {};
   };
@@ -123,15 +121,9 @@ class NeighbourLists {
     return lines_of_lists_[static_cast<std::size_t>(i) * lines_].slot;
   }
 
-  // (A restored number of lines out of range leaves the capacity 0, which well_formed() refuses.)
-  void set_lines(int lines) {
-    lines_ = lines;
-    capacity_ = lines > 0 && lines <= k_max_lines ? lines * k_line_slots - 1 : 0;
-  }
-
   void grow() {
     const int old = lines_;
-    set_lines(2 * old);
+    lines_ = 2 * old;
     std::vector<Line> grown;
     assign_in_huge_pages(grown, static_cast<std::size_t>(n_) * lines_, Line{});
     for (std::size_t i = 0; i < static_cast<std::size_t>(n_); ++i)
@@ -140,8 +132,7 @@ class NeighbourLists {
   }
 
   std::int32_t n_ = 0;
-  int lines_ = 0;     // per list
-  int capacity_ = 0;  // slots after the count: lines_ * k_line_slots - 1 (0 before a reset)
+  int lines_ = 0;  // per list (0 before the first reset)
   std::vector<Line> lines_of_lists_;
 };
 
