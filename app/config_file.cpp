@@ -282,7 +282,6 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
-    if (op->count() > 0) continue;  // given on the command line
     if (values.empty()) {
       // An empty list leaves the option at its default: right for a list whose default is no
       // values (snapshot_times, as --write-config and the CSV header write "none"); for any
@@ -297,6 +296,10 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       throw UsageError("--config", path + ": key '" + key + "': " + op->get_name() +
                                        ": takes one value, the file gives " +
                                        std::to_string(values.size()) + "; give one");
+    // A flag given on the command line wins, but the file's value is checked all the same (set,
+    // then the flag's value set again): a bad file is refused whichever flags come with it.
+    const CLI::results_t given = op->results();
+    op->clear();
     try {
       if (op->get_expected_min() == 0) {  // a flag: true or false
         if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))
@@ -308,6 +311,11 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       op->run_callback();
     } catch (const CLI::ParseError& e) {
       throw UsageError("--config", path + ": key '" + key + "': " + e.what());
+    }
+    if (!given.empty()) {
+      op->clear();
+      op->add_result(given);
+      op->run_callback();
     }
   }
 }

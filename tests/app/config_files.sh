@@ -88,8 +88,12 @@ refused "--config: typo.toml: unknown key 'densty' for simulate; allowed: dim, p
 printf 'restitution = 1.5\n' >range.toml
 refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is outside the allowed range \(0, 1\]" \
   simulate --config range.toml
+# A flag on the command line wins, but the file's value for it is checked all the same.
+refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is outside the allowed range" \
+  simulate --config range.toml --restitution 0.9
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
+refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
 refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
   simulate --config twice.toml
