@@ -32,16 +32,44 @@ void save_run(CheckpointWriter& out, double done, double wall_seconds, const Run
     out(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
 }
 
-void restore_run(CheckpointReader& in, double& done, double& wall_seconds, RunResult& result) {
+// The samples and snapshots so far are checked as the engine's state is (check_restored()): a
+// file edited with its checksum recomputed would otherwise put its numbers into the results.
+void restore_run(CheckpointReader& in, const Parameters& p, double& done, double& wall_seconds,
+                 RunResult& result) {
   std::uint64_t snapshots = 0;
   in(done, wall_seconds, result.samples, snapshots);
   if (!(std::isfinite(done) && std::isfinite(wall_seconds) && wall_seconds >= 0))
     in.fail("time reached or wall time spent (" + std::to_string(done) + ", " +
             std::to_string(wall_seconds) + " s) not a finite time >= 0");
+  const Sample* previous = nullptr;
+  for (const Sample& s : result.samples) {
+    const bool numbers = std::isfinite(s.t) && s.t <= done && std::isfinite(s.temperature) &&
+                         s.temperature >= 0 && std::isfinite(s.a2) &&
+                         std::isfinite(s.velocity_mode) && s.velocity_mode >= 0 &&
+                         std::isfinite(s.density_mode) && s.density_mode >= 0 &&
+                         s.collisions <= s.events && s.contacts.well_formed();
+    const bool in_order =
+        previous == nullptr ||
+        (previous->t < s.t && previous->collisions <= s.collisions && previous->events <= s.events);
+    if (!numbers || !in_order)
+      in.fail("sample at t = " + message_number(s.t) +
+              " not finite, not in time order, or after the time the run had reached");
+    previous = &s;
+  }
   if (snapshots > 1u << 20) in.fail("corrupt snapshot count");
   result.snapshots.resize(static_cast<std::size_t>(snapshots));
-  for (Snapshot& snap : result.snapshots)
+  const std::size_t values = static_cast<std::size_t>(p.dimension * p.particles);
+  for (Snapshot& snap : result.snapshots) {
     in(snap.t, snap.box, snap.collisions, snap.positions, snap.velocities);
+    const auto finite = [](const std::vector<double>& x) {
+      return std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+    };
+    if (!(std::isfinite(snap.t) && snap.t <= done && std::isfinite(snap.box) && snap.box > 0 &&
+          snap.positions.size() == values && snap.velocities.size() == values &&
+          finite(snap.positions) && finite(snap.velocities)))
+      in.fail("snapshot at t = " + message_number(snap.t) +
+              " not of N particles with finite values, or after the time the run had reached");
+  }
 }
 
 template <class RunEngine>
@@ -107,7 +135,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     double saved_t_end = 0;
     CheckpointReader in =
         read_checkpoint_file(checkpoints.restart, p, run_layout<RunEngine>(), &saved_t_end);
-    restore_run(in, done, wall_before, result);
+    restore_run(in, p, done, wall_before, result);
     engine.restore_state(in);
     in.finish();
     engine.check_restored(in);  // a file from outside (a relaxed state here is this process's)

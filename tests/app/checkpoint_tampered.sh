@@ -6,8 +6,9 @@
 # the box, a velocity changed behind the kinetic energy the engine carries, a particle moved onto
 # another (out of the cell it is filed in), a broken link or a changed time in the event
 # calendar, a clock's time unit of 0, -1 or half its value, the shuffle's random generator all
-# zero, a neighbour list of dense spheres naming a particle that does not exist. The untouched
-# files resume.
+# zero, a neighbour list of dense spheres naming a particle that does not exist, a sample, the
+# contact statistics or a snapshot holding a number that is not finite. The untouched files
+# resume.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -32,15 +33,22 @@ sample = int(re.search(rb"^layout = .* sample (\d+)( |$)", data[:at], re.M).grou
 # the engine's, which opens with the record array's length (a record per particle and one that
 # ends the cells' lists) and particle 0's record.
 samples = struct.unpack_from("<Q", data, payload + 16)[0]
-engine = payload + 16 + 8 + samples * sample + 8
-assert struct.unpack_from("<Q", data, engine)[0] == 401, "layout of the payload not understood"
-record = engine + 8
-# The record's size (the engine's layout): the particles' original indices follow the records,
-# opening with their count.
-stride = next(b for b in range(48, 257, 16)
-              if struct.unpack_from("<Q", data, record + 401 * b)[0] == 400)
-x, y, vx, vy = struct.unpack_from("<4d", data, record)
-if what == "nan":
+snapshots = payload + 16 + 8 + samples * sample   # their count, then each snapshot
+engine = snapshots + 8
+if struct.unpack_from("<Q", data, snapshots)[0] == 0:
+    assert struct.unpack_from("<Q", data, engine)[0] == 401, "layout of the payload not understood"
+    record = engine + 8
+    # The record's size (the engine's layout): the particles' original indices follow the
+    # records, opening with their count.
+    stride = next(b for b in range(48, 257, 16)
+                  if struct.unpack_from("<Q", data, record + 401 * b)[0] == 400)
+    x, y, vx, vy = struct.unpack_from("<4d", data, record)
+if what == "sample_nan":  # the first sample's temperature (its time, then its temperature)
+    struct.pack_into("<d", data, payload + 24 + 8, float("nan"))
+elif what == "snapshot_nan":  # the first snapshot (t, box, collisions, then its positions)
+    assert struct.unpack_from("<Q", data, snapshots + 8 + 24)[0] == 800, "snapshot not understood"
+    struct.pack_into("<d", data, snapshots + 8 + 32 + 8, float("nan"))
+elif what == "nan":
     struct.pack_into("<d", data, record, float("nan"))
 elif what == "outside":
     struct.pack_into("<d", data, record, 1e6)
@@ -50,10 +58,11 @@ elif what == "wall":
     struct.pack_into("<d", data, payload + 8, float("nan"))
 elif what == "overlap":  # particle 1 (the next record) onto particle 0, at its time
     struct.pack_into("<2d", data, record + stride, x, y)
-elif what.startswith("theta") or what == "rng_zero":
+elif what.startswith("theta") or what in ("rng_zero", "contacts"):
     # The clock (internal time, its offset, its time unit theta: 3 doubles) lies just before the
     # kinetic energy the engine carries (the sum of the squared internal velocities, found by its
-    # value); the collision and event counts and the shuffle's generator (4 words) follow it.
+    # value); the collision and event counts and the shuffle's generator (4 words and a spare,
+    # its size in the layout) follow it, then two counts (uint64) and the collision observer.
     u2 = sum(struct.unpack_from("<d", data, record + k * stride + off)[0] ** 2
              for k in range(400) for off in (16, 24))
     found = [k for k in range(record + 401 * stride, payload + size - 8)
@@ -61,6 +70,10 @@ elif what.startswith("theta") or what == "rng_zero":
     assert len(found) == 1, "layout of the clock not understood"
     if what == "rng_zero":  # the all-zero state
         data[found[0] + 24:found[0] + 56] = bytes(32)
+    elif what == "contacts":  # the contact statistics' sum of (g.e)^2, after their count and
+        # two other sums
+        rng = int(re.search(rb"^layout = .* rng (\d+)( |$)", data[:at], re.M).group(1))
+        struct.pack_into("<d", data, found[0] + 24 + rng + 16 + 24, float("nan"))
     else:  # theta 0, -1 or halved
         theta = struct.unpack_from("<d", data, found[0] - 8)[0]
         new = {"theta_zero": 0.0, "theta_negative": -1.0, "theta_half": theta / 2}[what]
@@ -127,6 +140,21 @@ shuffled=(simulate --particles 400 --density 0.1 --restitution 0.9 --randomize p
 tamper pk_rng rng_zero pk
 refused "--restart.*random generator in the all-zero state" \
   "${shuffled[@]}" --t-end 30 --out b.csv --restart pk_rng
+# The samples and contact statistics so far, and a snapshot, of a run that records them all.
+recorded=(simulate --particles 400 --density 0.1 --restitution 0.9 --contacts --quiet)
+"$bin" "${recorded[@]}" --t-end 20 --snapshot-times 2 --out r.csv --checkpoint rk \
+  --checkpoint-interval 5 2>/dev/null || fail "run with contacts, a snapshot and checkpoints"
+"$bin" "${recorded[@]}" --t-end 20 --out s.csv --checkpoint sk --checkpoint-interval 5 \
+  2>/dev/null || fail "run with contacts and checkpoints"
+tamper rk_snapshot snapshot_nan rk
+refused "--restart.*snapshot at t = 2 not of N particles with finite values" \
+  "${recorded[@]}" --t-end 30 --snapshot-times 2 --out b.csv --restart rk_snapshot
+tamper sk_sample sample_nan sk
+refused "--restart.*sample at t = 0 not finite" \
+  "${recorded[@]}" --t-end 30 --out b.csv --restart sk_sample
+tamper sk_contacts contacts sk
+refused "--restart.*collision observer's sums not finite" \
+  "${recorded[@]}" --t-end 30 --out b.csv --restart sk_contacts
 # Dense spheres (neighbour lists): the first neighbour of particle 0 made one far out of range.
 dense=(simulate --dim 3 --particles 400 --density 0.7 --restitution 0.9 --quiet)
 "$bin" "${dense[@]}" --t-end 2 --out d.csv --checkpoint dk --checkpoint-interval 1 2>/dev/null ||
@@ -139,5 +167,7 @@ refused "--restart.*neighbour lists .* out of range" \
   fail "the untouched dense checkpoint"
 "$bin" "${args[@]}" --t-end 30 --out c.csv --restart ck 2>/dev/null ||
   fail "the untouched checkpoint"
+"$bin" "${recorded[@]}" --t-end 30 --snapshot-times 2 --out c.csv --restart rk 2>/dev/null ||
+  fail "the untouched checkpoint with contacts and a snapshot"
 [ "$failures" -eq 0 ] || fail "$failures tampered checkpoints not refused as such"
 echo "ok: every tampered checkpoint refused, naming what is wrong"

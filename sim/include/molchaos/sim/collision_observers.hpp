@@ -62,6 +62,9 @@ struct ContactStatistics {
   template <int D>
   void after(const CollisionView<D>&, const CollisionOutcome&) {}
 
+  /// A restored checkpoint's check (Engine::check_restored()).
+  bool well_formed() const { return moments.well_formed(); }
+
   /// The sums since the previous take(); starts the next interval.
   ContactMoments take() {
     const ContactMoments taken = moments;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -25,6 +26,17 @@ struct ContactMoments {
   /// under molecular chaos) in equal bins; filled by accumulate() of contact_statistics.hpp.
   static constexpr int k_impact_bins = 10;
   std::array<std::uint64_t, k_impact_bins> impact_histogram{};
+
+  /// Whether these sums can come from collisions: finite, the sums of squares and moduli not
+  /// negative, and one histogram entry per collision (a restored checkpoint's check).
+  bool well_formed() const {
+    std::uint64_t binned = 0;
+    for (const std::uint64_t b : impact_histogram) binned += b;
+    using std::isfinite;
+    return binned == count && isfinite(sum_c1e_c2e) && isfinite(sum_c1_dot_c2) && sum_gn2 >= 0 &&
+           isfinite(sum_gn2) && sum_abs_gn >= 0 && isfinite(sum_abs_gn) && sum_g2 >= 0 &&
+           isfinite(sum_g2);
+  }
 };
 
 struct Sample {
