@@ -1,6 +1,7 @@
 // The checkpoint file: a text head (magic line, format, description of the run) ended by an empty
-// line, then the payload's size, the payload and its checksum (FNV-1a, 64 bit). The head can be
-// read with `head`; the payload is the memory image of the run's state.
+// line, then the payload's size, the payload and the checksum (FNV-1a, 64 bit) of all before it,
+// head included: a head edited to other parameters would otherwise resume the state under them.
+// The head can be read with `head`; the payload is the memory image of the run's state.
 #include "molchaos/sim/checkpoint.hpp"
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <string_view>
 
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
@@ -19,12 +21,9 @@ namespace {
 
 constexpr const char* k_magic = "molchaos checkpoint\n";
 
-std::uint64_t fnv1a(const std::string& bytes) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;
-  for (const char c : bytes) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;
-  }
+// FNV-1a of bytes, continuing from `hash` (the offset basis for a new hash).
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 0xcbf29ce484222325ULL) {
+  for (const char c : bytes) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
   return hash;
 }
 
@@ -56,11 +55,13 @@ std::string checkpoint_description(const Parameters& p, const std::string& layou
 
 void write_checkpoint_file(const std::string& path, const Parameters& p, const std::string& layout,
                            const std::string& payload) {
+  const std::uint64_t size = payload.size();
+  std::string head = std::string(k_magic) + "format = " + std::to_string(k_checkpoint_format) +
+                     "\n" + checkpoint_description(p, layout) + "\n";
+  head.append(reinterpret_cast<const char*>(&size), sizeof size);
+  const std::uint64_t checksum = fnv1a(payload, fnv1a(head));
   write_file_atomically(path, [&](std::ostream& out) {
-    out << k_magic << "format = " << k_checkpoint_format << "\n"
-        << checkpoint_description(p, layout) << "\n";
-    const std::uint64_t size = payload.size(), checksum = fnv1a(payload);
-    out.write(reinterpret_cast<const char*>(&size), sizeof size);
+    out.write(head.data(), static_cast<std::streamsize>(head.size()));
     out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
     out.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
   });
@@ -117,10 +118,14 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   if (text.size() - at < 2 * sizeof size) throw refuse("truncated payload");
   std::memcpy(&size, text.data() + at, sizeof size);
   at += sizeof size;
-  if (size != text.size() - at - sizeof checksum) throw refuse("truncated payload");
-  std::string payload = text.substr(at, static_cast<std::size_t>(size));
+  if (size != text.size() - at - sizeof checksum)
+    throw refuse(size > text.size() - at - sizeof checksum
+                     ? "truncated payload"
+                     : "bytes after the checksum (the file was extended)");
   std::memcpy(&checksum, text.data() + at + size, sizeof checksum);
-  if (checksum != fnv1a(payload)) throw refuse("checksum mismatch (corrupt file)");
+  if (checksum != fnv1a(std::string_view(text).substr(0, at + size)))
+    throw refuse("checksum mismatch (corrupt or edited file)");
+  std::string payload = text.substr(at, static_cast<std::size_t>(size));
   return CheckpointReader(std::move(payload), path);
 }
 

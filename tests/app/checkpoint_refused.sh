@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Usage: checkpoint_refused.sh MOLCHAOS EXPECT_USAGE_ERROR
 # A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
-# differs: another format, version, dimension or parameter, a corrupt or truncated file, a t_end
-# before the checkpoint's time; and --checkpoint-interval without --checkpoint.
+# differs: another format, version, dimension or parameter, a corrupt, truncated or extended file,
+# a head edited to other parameters, a t_end before the checkpoint's time; and
+# --checkpoint-interval without --checkpoint.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -35,6 +36,13 @@ refused "--restart.*written by molchaos 0.0.1\+other, this is" \
 size=$(wc -c <ck)
 head -c $((size - 100)) ck >truncated
 refused "--restart.*truncated payload" "${args[@]}" --out b.csv --restart truncated
+cp ck extended
+printf 'x' >>extended
+refused "--restart.*bytes after the checksum" "${args[@]}" --out b.csv --restart extended
+# The head is under the checksum too: a parameter edited there (and given to the run) is refused.
+sed '0,/^restitution = 0.9$/s//restitution = 0.5/' ck >edited_head
+cmp -s ck edited_head && fail "the head of ck has no line 'restitution = 0.9'"
+refused "--restart.*checksum mismatch" "${base[@]}" --restitution 0.5 --out b.csv --restart edited_head
 cp ck flipped
 printf '\x5a' | dd of=flipped bs=1 seek=$((size - 20)) conv=notrunc 2>/dev/null
 refused "--restart.*checksum mismatch" "${args[@]}" --out b.csv --restart flipped

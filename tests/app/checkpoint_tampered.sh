@@ -102,8 +102,8 @@ else:  # particle 0's entry in the event calendar, found by its bucket count and
         t = struct.unpack_from("<d", data, entry)[0]
         assert t < float("inf"), "particle 0 has no pending event"
         struct.pack_into("<d", data, entry, t * (1 + 1e-12))
-h = 0xcbf29ce484222325
-for b in data[payload:payload + size]:
+h = 0xcbf29ce484222325  # FNV-1a of the head and the payload
+for b in data[:payload + size]:
     h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
 struct.pack_into("<Q", data, payload + size, h)
 open(out, "wb").write(data)

@@ -20,7 +20,7 @@
 namespace molchaos::sim {
 
 /// Increase whenever the payload changes (members added, removed, reordered, or their meaning).
-inline constexpr std::uint32_t k_checkpoint_format = 6;
+inline constexpr std::uint32_t k_checkpoint_format = 7;
 
 /// A checkpoint that cannot be used for this run: unreadable, corrupt, of another format, version,
 /// dimension or parameters. The message names the file and what differs.
