@@ -59,6 +59,8 @@ inline std::size_t parse_real(const std::string& text, double& x) {
   return static_cast<std::size_t>(end - text.c_str());
 }
 
+/// The number validators below pass the value on as they read it (integers as plain decimal
+/// digits, -0 as 0), so they are attached with ->transform(): ->check() would check a copy.
 /// A validator for a real number in an interval; the message names the allowed range.
 inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_closed) {
   const std::string range = format_interval(lo, lo_closed, hi, hi_closed);
@@ -73,6 +75,7 @@ inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_clos
         const bool ok_lo = lo_closed ? x >= lo : x > lo;
         const bool ok_hi = hi_closed ? x <= hi : x < hi;
         if (!ok_lo || !ok_hi) return "value " + text + " is outside the allowed range " + range;
+        if (x == 0) text = "0";  // -0 is 0: one header line and one cache key for one run
         return {};
       },
       "in " + range);
@@ -93,6 +96,9 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
         if (used == 0 || used != text.size())
           return "'" + text + "' is not an integer; allowed range " + range;
         if (x < lo || x > hi) return "value " + text + " is outside the allowed range " + range;
+        // Read in base 10 here, but CLI11 converts with base 0, which takes a leading 0 for
+        // octal (050 -> 40): the value goes on as plain decimal digits.
+        text = std::to_string(x);
         return {};
       },
       "integer in " + range);
@@ -131,7 +137,7 @@ inline CLI::Validator unsigned_integer() {
             !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         if (!digits) return "'" + text + "' is not a non-negative integer; allowed range " + range;
         try {
-          (void)std::stoull(text);
+          text = std::to_string(std::stoull(text));  // decimal digits on (see integer_in)
         } catch (...) {
           return "value " + text + " is outside the allowed range " + range;
         }
@@ -232,6 +238,7 @@ CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector
   CLI::Validator items(
       [item_check](std::string& text) -> std::string {
         const auto list = comma_items(text);
+        std::string checked;  // the items as their check passes them on (integer_in)
         for (std::size_t k = 0; k < list.size(); ++k) {
           if (list[k].empty())
             return fmt::format(
@@ -240,7 +247,9 @@ CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector
                 k + 1, list.size(), text);
           std::string item = list[k];
           if (std::string why = item_check(item); !why.empty()) return why;
+          checked += (k == 0 ? "" : ",") + item;
         }
+        text = checked;
         return {};
       },
       item_check.get_description());
@@ -258,7 +267,7 @@ CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector
               }
           },
           help)
-      ->check(items);
+      ->transform(items);
 }
 
 /// Throws UsageError(flag, ...) if a value of a list option (state points, N values, modes) is

@@ -291,10 +291,10 @@ void add_bench_command(CLI::App& app) {
   add_list_option(cmd, "--particles", o->particles, "N values (comma separated)",
                   integer_in(100, 10000000));
   cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
-      ->check(integer_in(1000, 1000000000))
+      ->transform(integer_in(1000, 1000000000))
       ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->check(integer_in(0, 1024))
+      ->transform(integer_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
   set_callback_with_config(cmd, [o] { run_bench(*o); });

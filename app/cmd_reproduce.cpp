@@ -139,9 +139,9 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_option("--cache", o->cache, "run cache (default <out>/cache)")->check(path_name());
   cmd->add_flag("--quick", o->quick, "a first look in seconds (N = 1000, 3 restitutions, 3 seeds)");
   cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
-      ->check(integer_in(1, 10000));
+      ->transform(integer_in(1, 10000));
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->check(integer_in(0, 1024));
+      ->transform(integer_in(0, 1024));
   cmd->add_flag("!--no-figures", o->figures, "skip rendering");
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr (notes and errors still)");
   cmd->add_flag("--relax-each-run", o->relax_each_run,

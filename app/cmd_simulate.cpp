@@ -247,10 +247,10 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--checkpoint-interval", checkpoints.interval,
                   "Simulated time between checkpoints (taken at the first sample time after it; "
                   "0 = none) [sigma sqrt(m/T0)]")
-      ->check(real_in(0, true, std::numeric_limits<double>::infinity(), false));
+      ->transform(real_in(0, true, std::numeric_limits<double>::infinity(), false));
   cmd->add_option("--checkpoint-wall", checkpoints.wall_interval,
                   "Wall-clock seconds between checkpoints (0 = none)")
-      ->check(real_in(0, true, std::numeric_limits<double>::infinity(), false));
+      ->transform(real_in(0, true, std::numeric_limits<double>::infinity(), false));
   cmd->add_option("--restart", checkpoints.restart,
                   "Continue the run saved in this checkpoint (same parameters; t_end may change): "
                   "the output is byte for byte the uninterrupted run's")

@@ -73,6 +73,7 @@ void run_sweep_command(SweepCliOptions& o) {
       throw UsageError("--max-seeds",
                        fmt::format("value {} is below --seeds {}", o.spec.max_seeds, o.spec.seeds));
   }
+  require_distinct_files({{"--cache", o.cache}, {"--out", o.out}});
   if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
   if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   try {
@@ -166,32 +167,32 @@ void add_sweep_command(CLI::App& app) {
           "a method that runs no listed mode, is an error.")
       ->default_str("edmd");
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
-      ->check(integer_in(1, 100000))
+      ->transform(integer_in(1, 100000))
       ->capture_default_str();
   cmd->add_option("--target-error", o->spec.target_relative_error,
                   "more seeds, in stages, until SE(A)/A is at most this at every point "
                   "(relative; needs --cache)")
-      ->check(real_in(0.0, false, 1.0, false));
+      ->transform(real_in(0.0, false, 1.0, false));
   CLI::Option* max_seeds = cmd->add_option("--max-seeds", o->spec.max_seeds,
                                            "at most this many seeds per point "
                                            "with --target-error")
-                               ->check(integer_in(1, 100000))
+                               ->transform(integer_in(1, 100000))
                                ->capture_default_str();
   cmd->add_option("--base-seed", o->spec.base_seed, "base seed; run i uses a hash of (base, i)")
-      ->check(unsigned_integer())
+      ->transform(unsigned_integer())
       ->capture_default_str();
   cmd->add_option("--t-end-tau0", o->spec.t_end_in_tau0, "run length in kinetic-theory tau0")
-      ->check(real_in(0.0, false, 1e6, true))
+      ->transform(real_in(0.0, false, 1e6, true))
       ->capture_default_str();
   cmd->add_option("--t-end-elastic", o->spec.t_end_elastic, "run length at restitution 1")
-      ->check(real_in(0.0, false, 1e9, true))
+      ->transform(real_in(0.0, false, 1e9, true))
       ->capture_default_str();
   add_parameter_option(cmd, "samples_per_decade", o->spec.samples_per_decade);
   CLI::Option* relax = add_parameter_option(cmd, "relax_collisions_per_particle",
                                             o->spec.relax_collisions_per_particle);
   cmd->add_option("--cache", o->cache, "cache directory ('' for none)")->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->check(integer_in(0, 1024))
+      ->transform(integer_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV")->check(path_name());
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");

@@ -369,18 +369,19 @@ void add_theory_command(CLI::App& app) {
   add_parameter_option(cmd, "density", options->density);
   cmd->add_option("--b", options->correlation_b,
                   "velocity-correlation coefficient b (range: where f2 and μ2 stay positive)")
-      ->check(real_in(-std::numeric_limits<double>::infinity(), false,
-                      std::numeric_limits<double>::infinity(), false))
+      ->transform(real_in(-std::numeric_limits<double>::infinity(), false,
+                          std::numeric_limits<double>::infinity(), false))
       ->capture_default_str();
   cmd->add_option("--quadrature", options->quadrature,
                   "gauss (exact fixed rules) or adaptive (GSL QAGIU, the independent check)")
       ->check(CLI::IsMember({"gauss", "adaptive"}))
       ->capture_default_str();
-  CLI::Option* tolerance = cmd->add_option("--tolerance", options->tolerance,
-                  "relative tolerance of the adaptive quadrature (with --quadrature adaptive)")
-      ->check(
-          real_in(theory::k_min_relative_tolerance, true, theory::k_max_relative_tolerance, true))
-      ->capture_default_str();
+  CLI::Option* tolerance =
+      cmd->add_option("--tolerance", options->tolerance,
+                      "relative tolerance of the adaptive quadrature (with --quadrature adaptive)")
+          ->transform(real_in(theory::k_min_relative_tolerance, true,
+                              theory::k_max_relative_tolerance, true))
+          ->capture_default_str();
   cmd->add_flag("--json", options->json, "print one JSON document");
   auto hydrodynamics = add_hydrodynamics_options(*cmd);
   set_callback_with_config(cmd, [options, hydrodynamics, tolerance] {

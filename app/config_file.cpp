@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <ostream>
 #include <set>
+#include <sstream>
+#include <string_view>
 #include <variant>
 
 #include "cli_support.hpp"
@@ -35,17 +39,30 @@ bool ends_with(const std::string& text, const std::string& tail) {
          text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-// An H5MD trajectory is known by HDF5's first bytes (its name may end in .h5, .hdf5 or .h5md).
-bool is_hdf5_file(const std::string& path) {
-  static constexpr char k_signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
-  std::ifstream in(path, std::ios::binary);
-  char head[8] = {};
-  return in.read(head, sizeof head) && std::equal(head, head + 8, k_signature);
-}
+// What a --config file holds, by its content. An extended XYZ file: a particle count on its first
+// line, its comment line with Properties=. A result CSV: "# key = value" lines and then a column
+// line, which has no '='; a TOML file's first line that is no comment is a key = value line (a
+// TOML file of comments alone is TOML too: its commented-out keys are no keys).
+enum class Kind { toml, csv, xyz };
 
-// A result file whose header is read: a CSV or XYZ file (by its name) or an H5MD trajectory.
-bool is_result_file(const std::string& path) {
-  return ends_with(path, ".csv") || ends_with(path, ".xyz") || is_hdf5_file(path);
+Kind kind_of(const std::string& text) {
+  std::istringstream in(text);
+  std::string first, second;
+  std::getline(in, first);
+  std::getline(in, second);
+  const std::string count = trim(first);
+  if (!count.empty() && count.find_first_not_of("0123456789") == std::string::npos &&
+      second.find("Properties=") != std::string::npos)
+    return Kind::xyz;
+  if (!text.starts_with("#")) return Kind::toml;
+  in.clear();
+  in.seekg(0);
+  for (std::string line; std::getline(in, line);) {
+    const std::string content = trim(line);
+    if (content.empty() || content[0] == '#') continue;
+    return content.find('=') == std::string::npos ? Kind::csv : Kind::toml;
+  }
+  return Kind::toml;
 }
 
 // One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.
@@ -226,13 +243,21 @@ std::string allowed_keys(CLI::App* cmd) {
 
 }  // namespace
 
-ConfigItems read_config_file(const std::string& path) {
+ConfigFile read_config_file(const std::string& path) {
+  // Read once, whole: a pipe (--config <(...), /dev/stdin) can be read only once, and the kind of
+  // file is told by what it holds, whatever its name ends in.
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError("--config", "cannot read '" + path + "'");
-  if (is_hdf5_file(path)) {
+  std::string text;
+  if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw UsageError("--config", "cannot read '" + path + "'");
+  static constexpr std::string_view k_hdf5 = "\x89HDF\r\n\x1a\n";
+  if (text.starts_with(k_hdf5)) {
 #ifdef MOLCHAOS_HAVE_IO
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw UsageError("--config", path + ": an HDF5 file is read from a regular file, not a pipe");
     try {
-      return io::read_h5md_parameters(path);
+      return {io::read_h5md_parameters(path), true};
     } catch (const std::runtime_error& e) {
       throw UsageError("--config", e.what());
     }
@@ -241,16 +266,20 @@ ConfigItems read_config_file(const std::string& path) {
 #endif
   }
   // A UTF-8 byte order mark (as some Windows editors save) is no part of the first key.
-  char bom[3] = {};
-  if (!in.read(bom, 3) || bom[0] != '\xEF' || bom[1] != '\xBB' || bom[2] != '\xBF') {
-    in.clear();
-    in.seekg(0);
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  std::istringstream lines(text);
+  switch (kind_of(text)) {
+    case Kind::xyz:
+      return {read_xyz_header(lines, path), true};
+    case Kind::csv:
+      return {read_csv_header(lines), true};
+    case Kind::toml:
+      if (ends_with(path, ".csv") && !text.starts_with("#"))
+        throw UsageError("--config",
+                         path + ": no '# key = value' header (not a molchaos result file)");
+      return {read_toml(lines, path), false};
   }
-  if (ends_with(path, ".xyz")) return read_xyz_header(in, path);
-  const bool csv = ends_with(path, ".csv");
-  if (csv && in.peek() != '#')
-    throw UsageError("--config", path + ": no '# key = value' header (not a molchaos result file)");
-  return csv ? read_csv_header(in) : read_toml(in, path);
+  return {};
 }
 
 void add_config_option(CLI::App* cmd, std::string& path) {
@@ -264,11 +293,11 @@ void add_config_option(CLI::App* cmd, std::string& path) {
 
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const bool result_file = is_result_file(path);
+  const auto [items, result_file] = read_config_file(path);
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;
-  for (const auto& [key, values] : read_config_file(path)) {
+  for (const auto& [key, values] : items) {
     CLI::Option* op = option_of(cmd, key);
     if (op == nullptr || !op->get_configurable()) {
       // A result file names its outputs and the run's other inputs: skipped where not options.

@@ -1,8 +1,8 @@
 // Input files: every subcommand takes its options from a file (--config FILE) as well as from
 // flags, the flags winning. A file is either TOML (key = value; strings, booleans, numbers,
-// one-line arrays; no tables), a result CSV (a name ending in .csv), whose "# key = value"
-// header is read, an H5MD trajectory (HDF5, known by its first bytes), whose /parameters
-// attributes are read, or an extended XYZ file (.xyz), whose first comment line is read:
+// one-line arrays; no tables), a result CSV, whose "# key = value" header is read, an H5MD
+// trajectory, whose /parameters attributes are read, or an extended XYZ file, whose first
+// comment line is read (each known by its content, whatever its name):
 // `simulate --config run.csv` (or run.h5, run.xyz) repeats that run. A key is a
 // parameter table name (t_end, relax_collisions_per_particle) or an option's long name (t-end,
 // relax, seeds); each value goes through the option's own check, so an out-of-range value names
@@ -24,9 +24,17 @@ namespace molchaos::app {
 /// several values, an empty value none.
 using ConfigItems = std::vector<std::pair<std::string, std::vector<std::string>>>;
 
-/// Reads a TOML file or a result CSV's header; throws UsageError("--config", ...) naming the
-/// file and line of a syntax error.
-ConfigItems read_config_file(const std::string& path);
+/// A --config file's items, and whether it is a result file (whose keys that name no option of
+/// the command, such as its outputs, are skipped).
+struct ConfigFile {
+  ConfigItems items;
+  bool result_file = false;
+};
+
+/// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters or an extended XYZ
+/// file's first comment line, told apart by their content; throws UsageError("--config", ...)
+/// naming the file and line of a syntax error.
+ConfigFile read_config_file(const std::string& path);
 
 /// Adds --config FILE to cmd; `path` receives it. Call apply_config_file() first thing in cmd's
 /// callback (after the command line is parsed, so flags given there win).

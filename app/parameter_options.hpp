@@ -73,13 +73,13 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
                      sim::set_choice_index(p, info, *sim::find_choice(info, text));
                    },
                    help)
-                ->check(parameter_check(info))
+                ->transform(parameter_check(info))
                 ->default_str(sim::format_value(p, info));
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-            cmd->add_option(flag, target, help)->check(parameter_check(info));
+            cmd->add_option(flag, target, help)->transform(parameter_check(info));
           } else {
             cmd->add_option(flag, target, help)
-                ->check(parameter_check(info))
+                ->transform(parameter_check(info))
                 ->capture_default_str();
           }
         },
@@ -99,11 +99,11 @@ CLI::Option* add_parameter_option(CLI::App* cmd, std::string_view name, T& targe
               target = static_cast<T>(*sim::find_choice(info, text));
             },
             parameter_help(info))
-        ->check(parameter_check(info))
+        ->transform(parameter_check(info))
         ->default_str(std::string(info.choices[static_cast<std::size_t>(target)]));
   } else {
     return cmd->add_option(std::string(info.flag), target, parameter_help(info))
-        ->check(parameter_check(info))
+        ->transform(parameter_check(info))
         ->capture_default_str();
   }
 }
@@ -113,8 +113,11 @@ template <class T>
 CLI::Option* add_parameter_list_option(CLI::App* cmd, std::string_view name,
                                        std::vector<T>& target) {
   const sim::ParameterInfo& info = parameter_row(name);
+  std::string shown;  // the default list, as the help shows it
+  for (const T& value : target) shown += (shown.empty() ? "" : ",") + fmt::format("{}", value);
   return add_list_option(cmd, std::string(info.flag), target,
-                         parameter_help(info) + " (comma separated)", parameter_check(info));
+                         parameter_help(info) + " (comma separated)", parameter_check(info))
+      ->default_str(shown);
 }
 
 }  // namespace molchaos::app

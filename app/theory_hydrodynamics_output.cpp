@@ -48,11 +48,11 @@ LargestShearMode largest_shear_mode(const theory::TransportCoefficients& c, int 
 std::shared_ptr<HydrodynamicsOptions> add_hydrodynamics_options(CLI::App& cmd) {
   auto h = std::make_shared<HydrodynamicsOptions>();
   cmd.add_option("--particles", h->particles, "particles N of the box (largest shear mode 2π/L)")
-      ->check(integer_in(2, 100000000))
+      ->transform(integer_in(2, 100000000))
       ->capture_default_str();
   cmd.add_option("--growth", h->growth,
                  "level of the largest shear mode's S⊥ (1 in equilibrium) whose time is printed")
-      ->check(real_in(1.0, false, 1e12, true))
+      ->transform(real_in(1.0, false, 1e12, true))
       ->capture_default_str();
   return h;
 }

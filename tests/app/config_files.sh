@@ -31,6 +31,23 @@ cmp run.csv bom_again.csv || fail "the run repeated from its CSV with a byte ord
 "$bin" simulate --config bom.toml --out bom_toml.csv --quiet 2>/dev/null || fail "run from bom.toml"
 cmp run.csv bom_toml.csv || fail "the run repeated from its TOML with a byte order mark differs"
 echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark) and from its TOML, byte for byte"
+# A file is known by its content, whatever its name, and read once (a pipe can be read only once).
+cp run.csv run.dat
+"$bin" simulate --config run.dat --out dat_again.csv --quiet 2>/dev/null || fail "run from run.dat"
+cmp run.csv dat_again.csv || fail "the run repeated from its header under another name differs"
+"$bin" simulate --config /dev/stdin --out piped.csv --quiet <run.toml 2>/dev/null ||
+  fail "run from a pipe"
+cmp run.csv piped.csv || fail "the run repeated from its TOML through a pipe differs"
+echo "ok: a result file known by its content; a file read through a pipe"
+# Integers are decimal whatever their leading zeros (read with base 0, 050 would be octal 40),
+# on the command line and in a file; -0 is 0.
+printf 'seed = 010\n' >zeros.toml
+"$bin" simulate --config zeros.toml --particles 050 --max-collisions 0100 --relax -0 --t-end 1 \
+  --out zeros.csv --quiet 2>/dev/null || fail "run with leading zeros"
+grep -qx "# particles = 50" zeros.csv && grep -qx "# seed = 10" zeros.csv &&
+  grep -qx "# max_collisions = 100" zeros.csv &&
+  grep -qx "# relax_collisions_per_particle = 0" zeros.csv || fail "leading zeros or -0 misread"
+echo "ok: integers with leading zeros read as decimal, -0 as 0"
 if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
   # An H5MD trajectory carries the run's parameters (/parameters): the run repeats from it too.
   "$bin" simulate --config run.csv --out traj.csv --trajectory traj.h5 --xyz traj.xyz --quiet \
