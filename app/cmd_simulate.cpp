@@ -97,6 +97,52 @@ std::string snapshot_path(const std::string& out, std::size_t index) {
   return (p.parent_path() / (stem + ".snapshot" + std::to_string(index) + ".csv")).string();
 }
 
+// Every output of the run, written as one (sim::StagedFiles): all files or none, and a full disk
+// leaves the files of a run before in place. Written with the results, so that a run refused on
+// the way (a checkpoint of other parameters) or interrupted leaves no file. SIGINT and SIGTERM
+// wait until the files are in place (a signal's default end would leave temporaries behind);
+// temporaries of a writer killed outright are removed by the next run (their age rule in
+// sim::remove_stale_temporaries).
+// The snapshot files of --snapshot-times that the run did not reach (it stopped before) are
+// removed: a run's snapshot names are its own, and an older run's there would pass for its.
+void write_outputs(const SimulateOptions& options, const sim::RunResult& result) {
+  const sim::Parameters& p = options.parameters;
+  sigset_t signals, before;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, &before);
+  struct Unblock {
+    const sigset_t* mask;
+    ~Unblock() { pthread_sigmask(SIG_SETMASK, mask, nullptr); }
+  } unblock{&before};
+  for (const std::string& path : {options.out, options.write_config, options.pair_correlations,
+                                  options.trajectory, options.xyz})
+    if (!path.empty()) {
+      const std::string directory = std::filesystem::path(path).parent_path().string();
+      sim::remove_stale_temporaries(directory.empty() ? "." : directory);
+    }
+  sim::StagedFiles files;
+  if (!options.write_config.empty())
+    files.write(options.write_config, [&](std::ostream& out) { write_config_toml(p, out); });
+  files.write(options.out, [&](std::ostream& out) { sim::write_csv(result, out); });
+  for (std::size_t k = 0; k < result.snapshots.size(); ++k)
+    files.write(snapshot_path(options.out, k),
+                [&](std::ostream& out) { sim::write_snapshot_csv(result, k, out); });
+  if (!options.pair_correlations.empty())
+    files.write(options.pair_correlations,
+                [&](std::ostream& out) { validation::write_run_pair_correlations(result, out); });
+#ifdef MOLCHAOS_HAVE_IO
+  if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory, files);
+  if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz, files);
+#endif
+  files.commit();
+  for (std::size_t k = result.snapshots.size(); k < p.snapshot_times.size(); ++k) {
+    std::error_code ignored;
+    std::filesystem::remove(snapshot_path(options.out, k), ignored);
+  }
+}
+
 void run_simulate(const SimulateOptions& options) {
   const sim::Parameters& p = options.parameters;
   require_writable_file("--out", options.out, /*create_parent=*/false);
@@ -187,24 +233,7 @@ void run_simulate(const SimulateOptions& options) {
                       checkpoints.path);
   const sim::RunResult& result = *run;
 
-  // Written with the results, so that a run refused on the way (a checkpoint of other
-  // parameters) or interrupted leaves no file.
-  if (!options.write_config.empty())
-    sim::write_file_atomically(options.write_config,
-                               [&](std::ostream& out) { write_config_toml(p, out); });
-  sim::write_csv_file(result, options.out);
-  for (std::size_t k = 0; k < result.snapshots.size(); ++k)
-    sim::write_file_atomically(snapshot_path(options.out, k), [&](std::ostream& file) {
-      sim::write_snapshot_csv(result, k, file);
-    });
-  if (!options.pair_correlations.empty())
-    sim::write_file_atomically(options.pair_correlations, [&](std::ostream& file) {
-      validation::write_run_pair_correlations(result, file);
-    });
-#ifdef MOLCHAOS_HAVE_IO
-  if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory);
-  if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz);
-#endif
+  write_outputs(options, result);
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
                sim::stop_message(result).c_str(), options.out.c_str());

@@ -184,25 +184,22 @@ void write_contents(hid_t file, const sim::RunResult& r) {
 
 }  // namespace
 
+void write_h5md_file(const sim::RunResult& r, const std::string& path, sim::StagedFiles& files) {
+  // Written under a temporary name and flushed (a full disk shows here, not in a close nobody
+  // checks); files renames it, or removes it on any failure.
+  const std::string temporary = files.temporary(path);
+  const Handle file_plist{untimed(H5P_FILE_CREATE), H5Pclose};  // the root group too
+  Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, file_plist.id, H5P_DEFAULT),
+                    temporary.c_str()),
+              H5Fclose};
+  write_contents(file.id, r);
+  check_status(H5Fflush(file.id, H5F_SCOPE_GLOBAL), temporary.c_str());
+}
+
 void write_h5md_file(const sim::RunResult& r, const std::string& path) {
-  const std::string temporary = sim::temporary_name(path);
-  // Written under a temporary name, flushed (a full disk shows here, not in a close nobody
-  // checks), then renamed; on any failure, the rename's included, the temporary is removed.
-  try {
-    {
-      const Handle file_plist{untimed(H5P_FILE_CREATE), H5Pclose};  // the root group too
-      Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, file_plist.id, H5P_DEFAULT),
-                        temporary.c_str()),
-                  H5Fclose};
-      write_contents(file.id, r);
-      check_status(H5Fflush(file.id, H5F_SCOPE_GLOBAL), temporary.c_str());
-    }
-    std::filesystem::rename(temporary, path);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw;
-  }
+  sim::StagedFiles files;
+  write_h5md_file(r, path, files);
+  files.commit();
 }
 
 }  // namespace molchaos::io

@@ -42,10 +42,16 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
   }
 }
 
-void write_xyz_file(const sim::RunResult& r, const std::string& path) {
-  sim::write_file_atomically(path, [&](std::ostream& out) {
+void write_xyz_file(const sim::RunResult& r, const std::string& path, sim::StagedFiles& files) {
+  files.write(path, [&](std::ostream& out) {
     for (std::size_t k = 0; k < r.snapshots.size(); ++k) write_xyz_frame(r, k, out);
   });
+}
+
+void write_xyz_file(const sim::RunResult& r, const std::string& path) {
+  sim::StagedFiles files;
+  write_xyz_file(r, path, files);
+  files.commit();
 }
 
 }  // namespace molchaos::io

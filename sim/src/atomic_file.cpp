@@ -48,32 +48,55 @@ std::string temporary_name(const std::string& path) {
   return (p.parent_path() / name).string();
 }
 
-void write_file_atomically(const std::string& path,
-                           const std::function<void(std::ostream&)>& write) {
-  const std::string temporary = temporary_name(path);
-  auto fail = [&](const std::string& what, int error) {
+StagedFiles::~StagedFiles() {
+  for (const auto& [temporary, path] : staged_) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
+  }
+}
+
+std::string StagedFiles::temporary(const std::string& path) {
+  staged_.emplace_back(temporary_name(path), path);
+  return staged_.back().first;
+}
+
+void StagedFiles::write(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  const std::string file = temporary(path);
+  auto fail = [&](const std::string& what, int error) {
     throw std::runtime_error("cannot write " + path + ": " + what +
                              (error ? " (" + error_text(error) + ")" : std::string()));
   };
-  {
-    errno = 0;
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail("cannot create " + temporary, errno);
-    errno = 0;
-    try {
-      write(out);
-    } catch (const std::exception& e) {
-      fail(e.what(), 0);
-    }
-    if (!out) fail("write failed", errno);  // errno of the write that failed (e.g. ENOSPC)
-    out.flush();
-    if (!out) fail("write failed", errno);
-    out.close();
-    if (out.fail()) fail("close failed", errno);
+  errno = 0;
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) fail("cannot create " + file, errno);
+  errno = 0;
+  try {
+    write(out);
+  } catch (const std::exception& e) {
+    fail(e.what(), 0);
   }
-  if (::rename(temporary.c_str(), path.c_str()) != 0) fail("rename failed", errno);
+  if (!out) fail("write failed", errno);  // errno of the write that failed (e.g. ENOSPC)
+  out.flush();
+  if (!out) fail("write failed", errno);
+  out.close();
+  if (out.fail()) fail("close failed", errno);
+}
+
+void StagedFiles::commit() {
+  while (!staged_.empty()) {
+    const auto& [temporary, path] = staged_.front();
+    if (::rename(temporary.c_str(), path.c_str()) != 0)
+      throw std::runtime_error("cannot write " + path + ": rename failed (" + error_text(errno) +
+                               ")");
+    staged_.erase(staged_.begin());
+  }
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write) {
+  StagedFiles file;
+  file.write(path, write);
+  file.commit();
 }
 
 void probe_writable(const std::string& path) {

@@ -4,7 +4,7 @@
 # unwritable or special outputs are refused (exit 2, naming the flag) before any work, snapshot
 # paths stay next to --out, a cache that cannot take a run stops the sweep naming the folder, and
 # a full disk (a small tmpfs, where mounting is allowed) gives exit 1 with no file or temporary
-# left behind.
+# left behind, and a signal while a run's outputs are written waits until they are all in place.
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
@@ -81,13 +81,35 @@ mkdir data.v2 sub
 [ -f run.snapshot0.csv ] || fail "snapshot of ../run not at ./run.snapshot0.csv: $(ls -a)"
 echo "ok: snapshot paths"
 
-# 2. Full disk: exit 1, nothing half-written, no temporary left.
+# 9. A signal while the outputs are written: it waits until they are all in place, and no
+# temporary is left (before, the CSV was in place, the rest missing, a temporary half-written).
+snapshot_times=$(seq -s ' ' 0 0.05 1)
+"$bin" simulate --particles 20000 --density 0.1 --relax 0 --t-end 1 --quiet \
+  --snapshot-times $snapshot_times --xyz sig.xyz --out sig.csv 2>/dev/null &
+pid=$!
+# SIGTERM: a script's background job ignores SIGINT. The output phase is known by a temporary
+# with content (the checks of the outputs at the start make empty ones).
+for _ in $(seq 4000); do
+  [ -n "$(find . -maxdepth 1 -name '.sig*molchaos-tmp*' -size +0 2>/dev/null)" ] && break
+  kill -0 $pid 2>/dev/null || break
+  sleep 0.002
+done
+kill -TERM $pid 2>/dev/null
+wait $pid
+[ -z "$(ls -A | grep molchaos-tmp || true)" ] || fail "temporaries left by SIGTERM: $(ls -A)"
+[ -e sig.csv ] && [ -e sig.xyz ] && [ "$(ls sig.snapshot*.csv | wc -l)" -eq 21 ] ||
+  fail "SIGTERM while writing left an incomplete set: $(ls sig* 2>/dev/null)"
+echo "ok: a signal while the outputs are written"
+
+# 2. Full disk: exit 1, nothing half-written, no temporary left, the earlier run's file in place.
 if mount_small_tmpfs small 64k; then
   for n in 2000 6000; do
+    echo "an earlier run" >small/run.csv
     "$bin" simulate --particles $n --t-end 1 --relax 1 --snapshot-times 1 --quiet --out small/run.csv > /dev/null 2> err.txt
     s=$?
     [ "$s" -eq 1 ] || fail "full disk (N = $n) gave status $s"
     grep -q "No space left" err.txt || fail "full disk not named: $(cat err.txt)"
+    [ "$(cat small/run.csv)" = "an earlier run" ] || fail "a full disk replaced the earlier run.csv"
     leftovers=$(ls -A small | grep -v '^run\.csv$' || true)
     [ -z "$leftovers" ] || fail "left behind on a full disk: $leftovers"
     rm -f small/*

@@ -70,9 +70,13 @@ void check_writer(const std::string& name, const Writer& write) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(h5md_failed_rename_leaves_no_temporary) {
-  check_writer("h5md", molchaos::io::write_h5md_file);
+  check_writer("h5md", [](const RunResult& r, const std::string& path) {
+    molchaos::io::write_h5md_file(r, path);
+  });
 }
 
 BOOST_AUTO_TEST_CASE(xyz_failed_rename_leaves_no_temporary) {
-  check_writer("xyz", molchaos::io::write_xyz_file);
+  check_writer("xyz", [](const RunResult& r, const std::string& path) {
+    molchaos::io::write_xyz_file(r, path);
+  });
 }

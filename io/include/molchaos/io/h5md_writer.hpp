@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/result.hpp"
 
 namespace molchaos::io {
@@ -11,5 +12,7 @@ namespace molchaos::io {
 /// Writes every snapshot of r to path (temporary file, then rename). step is the snapshot index:
 /// an event-driven run has no time step. Throws std::runtime_error on an HDF5 failure.
 void write_h5md_file(const sim::RunResult& r, const std::string& path);
+/// The same, staged in `files` (renamed to path by files.commit(), with a run's other outputs).
+void write_h5md_file(const sim::RunResult& r, const std::string& path, sim::StagedFiles& files);
 
 }  // namespace molchaos::io

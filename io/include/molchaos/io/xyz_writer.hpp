@@ -6,6 +6,7 @@
 #include <ostream>
 #include <string>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/result.hpp"
 
 namespace molchaos::io {
@@ -17,5 +18,7 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
 
 /// All snapshots of r, one frame each, to path (temporary file, then rename).
 void write_xyz_file(const sim::RunResult& r, const std::string& path);
+/// The same, staged in `files` (renamed to path by files.commit(), with a run's other outputs).
+void write_xyz_file(const sim::RunResult& r, const std::string& path, sim::StagedFiles& files);
 
 }  // namespace molchaos::io
