@@ -79,6 +79,12 @@ mkdir data.v2 sub
 [ -f data.v2/run.snapshot0.csv ] || fail "snapshot not in data.v2/: $(ls)"
 (cd sub && "$bin" simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 --quiet --out ../run 2>/dev/null) || fail "simulate ../run"
 [ -f run.snapshot0.csv ] || fail "snapshot of ../run not at ./run.snapshot0.csv: $(ls -a)"
+# A run that stops before its later snapshot times takes the earlier run's files there away.
+"$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5 25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv"
+[ -f stop.snapshot1.csv ] || fail "no snapshot 1 of stop.csv"
+"$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5 25 --max-collisions 100 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, stopped early"
+grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && [ ! -e stop.snapshot1.csv ] ||
+  fail "the earlier run's snapshot at a time the new run did not reach stayed: $(ls stop*)"
 echo "ok: snapshot paths"
 
 # 9. A signal while the outputs are written: it waits until they are all in place, and no
