@@ -11,6 +11,7 @@
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/contact_statistics.hpp"
 #include "molchaos/sim/dsmc_contact.hpp"
+#include "molchaos/sim/momentum_drift.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/version.hpp"
 
@@ -93,8 +94,9 @@ void DsmcGas<D>::draw_maxwell_velocities(Rng& rng) {
     for (int a = 0; a < D; ++a) v.u[a] *= factor;
 }
 
-// Every N/4 collisions: Σu² recomputed exactly (the per-collision updates round), the internal
-// units reset when the gas has cooled, and B tightened to the current max |u| (a cooling gas
+// Every N/4 collisions: Σu² recomputed exactly (the per-collision updates round), the momentum
+// drift of rounding removed once it matters (momentum_drift.hpp), the internal units reset when
+// the gas has cooled, and B tightened to the current max |u| (a cooling gas
 // leaves it loose, which costs rejections, not accuracy).
 template <int D>
 void DsmcGas<D>::bookkeeping() {
@@ -110,6 +112,7 @@ void DsmcGas<D>::bookkeeping() {
   };
   double sum, max_u2;
   sums(sum, max_u2);
+  if (remove_momentum_drift<D>(velocity_, sum, [](Velocity& v) { return v.u; })) sums(sum, max_u2);
   const double internal_temperature = sum / (static_cast<double>(n_) * D);
   if (internal_temperature < k_rescale_temperature && internal_temperature > 0) {
     const double factor = 1.0 / std::sqrt(internal_temperature);

@@ -21,6 +21,7 @@
 #include "molchaos/sim/hilbert_curve.hpp"
 #include "molchaos/sim/huge_pages.hpp"
 #include "molchaos/sim/initial_state.hpp"
+#include "molchaos/sim/momentum_drift.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/run.hpp"
 

@@ -229,32 +229,10 @@ void Engine<D, Observer>::set_collision_limit(std::uint64_t limit) {
   event_limit_ = events < 1.8e19 ? static_cast<std::uint64_t>(events) : 0;
 }
 
-// Collisions conserve momentum only up to rounding, and the centre of mass keeps its velocity
-// while the gas cools: after some 30 decades of cooling this drift would carry most of the
-// kinetic energy (T frozen at the drift's, the gas drifting across cells without colliding).
-// The total momentum is zero by construction, so the drift is removed once its energy exceeds
-// k_drift_fraction of the total; before that (every run that cools by fewer than about 20
-// decades) no velocity is touched.
-template <int D, class Observer>
-void Engine<D, Observer>::remove_momentum_drift() {
-  constexpr double k_drift_fraction = 1e-10;
-  double mean[D] = {};
-  for (const auto& particle : particles())
-    for (int a = 0; a < D; ++a) mean[a] += particle.v[a];
-  double drift_u2 = 0;
-  for (int a = 0; a < D; ++a) {
-    mean[a] /= n_;
-    drift_u2 += n_ * mean[a] * mean[a];
-  }
-  if (!(drift_u2 > k_drift_fraction * sum_velocity_squared())) return;
-  for (auto& particle : particles())
-    for (int a = 0; a < D; ++a) particle.v[a] -= mean[a];
-}
-
 template <int D, class Observer>
 void Engine<D, Observer>::resync() {
   for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
-  remove_momentum_drift();
+  remove_momentum_drift<D>(particles(), sum_velocity_squared(), [](Particle& p) { return p.v; });
   sum_u2_ = sum_velocity_squared();
   const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
   double factor = 1.0;

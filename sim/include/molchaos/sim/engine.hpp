@@ -194,7 +194,6 @@ class Engine {
   void collect_neighbours(std::int32_t i, bool only_higher);
   [[gnu::always_inline]] void advance_particle(std::int32_t i);
   void resync();
-  void remove_momentum_drift();
   void rebuild_events();
   void sort_by_cell();
   void reset_cells();
