@@ -59,7 +59,7 @@ void run_sweep_command(SweepCliOptions& o) {
   for (double n : o.spec.densities)
     if (n >= sim::close_packing_density(o.spec.dimension))
       throw UsageError("--density",
-                       fmt::format("value {} is at or above close packing {:.6f} for --dim {}", n,
+                       fmt::format("value {} is at or above close packing {} for --dim {}", n,
                                    sim::close_packing_density(o.spec.dimension), o.spec.dimension));
   if (o.max_seeds_given && o.spec.target_relative_error <= 0.0)
     throw UsageError("--max-seeds",

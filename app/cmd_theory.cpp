@@ -87,7 +87,7 @@ void validate_theory_inputs(const TheoryOptions& o) {
   try {
     theory::require_density(o.dimension, o.density);
   } catch (const std::invalid_argument&) {
-    throw UsageError("--density", fmt::format("value {} is outside the allowed range (0, {:.6f}) "
+    throw UsageError("--density", fmt::format("value {} is outside the allowed range (0, {}) "
                                               "for --dim {} (close packing)",
                                               o.density, theory::close_packing_density(o.dimension),
                                               o.dimension));
@@ -97,7 +97,7 @@ void validate_theory_inputs(const TheoryOptions& o) {
       theory::correlation_b_range(o.dimension, a2, theory::k_paper_dyad_factor, quadrature_of(o));
   if (!(o.correlation_b >= range.lower && o.correlation_b < range.upper))
     throw UsageError(
-        "--b", fmt::format("value {} is outside the allowed range [{:.6g}, {:.6g}) for --dim {}, "
+        "--b", fmt::format("value {} is outside the allowed range [{}, {}) for --dim {}, "
                            "--restitution {} (where the ansatz's f2 at grazing impact, the "
                            "collision rate and μ2 stay positive)",
                            o.correlation_b, range.lower, range.upper, o.dimension, o.restitution));

@@ -27,7 +27,9 @@ LargestShearMode largest_shear_mode(const theory::TransportCoefficients& c, int 
                                     double restitution, double density,
                                     const HydrodynamicsOptions& h) {
   LargestShearMode m;
-  m.box = std::pow(static_cast<double>(h.particles) / density, 1.0 / dimension);
+  // (N/n)^(1/d) as N^(1/d) / n^(1/d): the quotient N/n overflows for n below about 1e-300.
+  m.box = std::pow(static_cast<double>(h.particles), 1.0 / dimension) /
+          std::pow(density, 1.0 / dimension);
   m.wavenumber = 2.0 * std::numbers::pi / m.box;
   m.rate = theory::shear_mode_rate(c, m.wavenumber);
   m.collisions = theory::collisions_to_reach(c, m.wavenumber, h.growth);

@@ -87,11 +87,10 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
     const CoolingPrediction r = predict_cooling(reference);
     const double largest = in.restitution < 1.0 ? r.tau0.value : r.A.value;
     std::ostringstream msg;
-    msg.precision(6);
-    msg << "density: value " << in.density << " is outside the allowed range ("
+    msg << "density: value " << exact_text(in.density) << " is outside the allowed range ("
         << std::setprecision(3) << reference.density * largest / std::numeric_limits<double>::max()
-        << ", " << std::fixed << std::setprecision(6) << close_packing_density(in.dimension)
-        << ") for restitution " << std::defaultfloat << in.restitution
+        << ", " << exact_text(close_packing_density(in.dimension)) << ") for restitution "
+        << exact_text(in.restitution)
         << (in.restitution < 1.0 ? ": below it the cooling time τ0 ∝ 1/n overflows a double"
                                  : ": below it the prefactor A ∝ 1/n overflows a double");
     throw std::invalid_argument(msg.str());

@@ -52,8 +52,8 @@ void require_correlation_b(const ExpansionTable& mu2, double a2, double b,
   if (!(b >= r.lower && b < r.upper)) {
     std::ostringstream msg;
     msg.precision(6);
-    msg << "correlation_b: value " << b << " is outside the allowed range [" << r.lower << ", "
-        << r.upper << ") where the ansatz's f2 (grazing collisions, collision rate) and μ2 stay "
+    msg << "correlation_b: value " << exact_text(b) << " is outside the allowed range ["
+        << exact_text(r.lower) << ", " << exact_text(r.upper) << ") where the ansatz's f2 (grazing collisions, collision rate) and μ2 stay "
         << "positive (d = " << mu2.dimension << ", a2 = " << a2 << ", dyad factor "
         << mu2.dyad_factor << ")";
     throw std::invalid_argument(msg.str());

@@ -10,9 +10,8 @@ void require_in_range(const std::string& name, double x, double lo, double hi, b
   const bool ok = std::isfinite(x) && x > lo && (hi_open ? x < hi : x <= hi);
   if (!ok) {
     std::ostringstream msg;
-    msg.precision(10);
-    msg << name << ": value " << x << " is outside the allowed range (" << lo << ", " << hi
-        << (hi_open ? ")" : "]");
+    msg << name << ": value " << exact_text(x) << " is outside the allowed range ("
+        << exact_text(lo) << ", " << exact_text(hi) << (hi_open ? ")" : "]");
     throw std::invalid_argument(msg.str());
   }
 }

@@ -2,11 +2,20 @@
 // and the argument checks shared by the theory functions.
 #pragma once
 
+#include <charconv>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 namespace molchaos::theory {
+
+/// x in the shortest form that reads back as x: the numbers of an error message, whose value and
+/// bounds would otherwise round to the same digits ("value 0.67121596 is outside [-2, 0.671216)").
+inline std::string exact_text(double x) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, x);
+  return std::string(text, result.ptr);
+}
 
 /// Throws std::invalid_argument naming `dimension` and its allowed values unless d ∈ {2, 3}.
 inline void require_dimension(int dimension) {
