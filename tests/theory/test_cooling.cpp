@@ -63,6 +63,25 @@ BOOST_AUTO_TEST_CASE(A_is_tau0_times_one_minus_eps_squared) {
   BOOST_TEST(std::abs(p.A_uncorrelated.value - expect) <= 1e-9 * expect);
 }
 
+// μ2 = (1 − ε²) c_d μ2/μ2(0,0) with c_2 = √(π/2), c_3 = √(2π) (Haff's law's prefactors, as in
+// the test above) up to ε = 1 − 2⁻⁵³, where a quadrature at ε itself cancels to noise (it gave a
+// negative μ2 there); the same for τ0 = A/(1 − ε²).
+BOOST_AUTO_TEST_CASE(mu2_and_tau0_near_the_elastic_limit) {
+  for (int d : {2, 3})
+    for (double eps : {0.9, 0.99999999999999, 1.0 - std::ldexp(1.0, -53)}) {
+      CoolingInputs in;
+      in.dimension = d;
+      in.restitution = eps;
+      const CoolingPrediction p = predict_cooling(in);
+      const double one_minus_eps2 = (1.0 - eps) * (1.0 + eps);
+      const double c = d == 2 ? std::sqrt(std::numbers::pi / 2) : std::sqrt(2 * std::numbers::pi);
+      const double expect = one_minus_eps2 * c * p.mu2_ratio.value;
+      BOOST_TEST_INFO("d = " << d << ", eps = " << eps);
+      BOOST_TEST(std::abs(p.mu2.value - expect) <= 1e-12 * expect);
+      BOOST_TEST(std::abs(p.tau0.value * one_minus_eps2 - p.A.value) <= 1e-12 * p.A.value);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(elastic_gas_does_not_cool) {
   CoolingInputs in;
   in.restitution = 1.0;

@@ -47,18 +47,24 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   out.enskog_collision_frequency =
       enskog_collision_frequency(in.dimension, in.density, in.initial_temperature);
 
-  // One table of μ2's terms (exact Gauss rules, or adaptive when asked): μ2(a2, b)/μ2(0,0) does
-  // not depend on ε (Δ(c1² + c2²) ∝ 1 − ε²), so at ε = 1, where both vanish, it is taken at 1/2.
-  const double eps_table = in.restitution < 1.0 ? in.restitution : 0.5;
+  // One table of μ2's terms (exact Gauss rules, or adaptive when asked). Every term is ∝ 1 − ε²
+  // (Δ(c1² + c2²) is), so the table is taken at ε = 1/2 and its base scaled by
+  // (1 − ε)(1 + ε)/(3/4): a table at ε itself loses digits to cancellation as ε → 1 (μ2 came out
+  // negative at ε = 1 − 2⁻⁵³), and at ε = 1 every term vanishes. (1 − ε)(1 + ε) rather than
+  // 1 − ε², whose rounding of ε² is a relative error of 1e-16/(1 − ε²).
+  constexpr double k_eps_table = 0.5;
+  const double one_minus_eps2 = (1.0 - in.restitution) * (1.0 + in.restitution);
+  const double base_scale = one_minus_eps2 / ((1.0 - k_eps_table) * (1.0 + k_eps_table));
   const ExpansionTable table =
-      expand_collision_moment(in.dimension, 2, eps_table, in.dyad_factor, in.quadrature);
+      expand_collision_moment(in.dimension, 2, k_eps_table, in.dyad_factor, in.quadrature);
   require_correlation_b(table, out.a2, in.correlation_b, in.quadrature);
   out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b});
   const Estimate ratio_uncorrelated = table.ratio_estimate(PairShape{out.a2, 0.0, 0.0});
   if (in.restitution < 1.0) {
-    const double base = table.base.value;
-    out.mu2 = {base * out.mu2_ratio.value, std::abs(base) * out.mu2_ratio.error +
-                                               table.base.error * std::abs(out.mu2_ratio.value)};
+    const double base = table.base.value * base_scale;
+    out.mu2 = {base * out.mu2_ratio.value,
+               std::abs(base) * out.mu2_ratio.error +
+                   table.base.error * base_scale * std::abs(out.mu2_ratio.value)};
   } else {
     out.mu2 = {0.0, 0.0};  // elastic: no dissipation
   }
@@ -71,7 +77,6 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
       1.0 / (out.omega0 * ratio_uncorrelated.value),
       ratio_uncorrelated.relative_error() / std::abs(out.omega0 * ratio_uncorrelated.value)};
   if (in.restitution < 1.0) {
-    const double one_minus_eps2 = 1.0 - in.restitution * in.restitution;
     out.tau0 = {out.A.value / one_minus_eps2, std::abs(out.A.error / one_minus_eps2)};
   } else {
     out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
