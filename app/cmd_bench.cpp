@@ -42,6 +42,7 @@ struct BenchOptions {
   std::vector<long long> particles{1000, 3000, 10000, 30000, 100000};
   long long work = 400000;  // particle-runs per N
   int threads = 0;
+  std::string simulation_flag_given;  // --particles or --work, which apply to --simulation only
 };
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -271,6 +272,8 @@ void bench_simulation(const BenchOptions& o) {
 
 void run_bench(const BenchOptions& o) {
   if (!o.theory && !o.simulation) throw UsageError("bench", "choose --theory and/or --simulation");
+  if (!o.simulation && !o.simulation_flag_given.empty())  // would be dropped without a word
+    throw UsageError(o.simulation_flag_given, "applies to --simulation only");
   reject_repeated_values("--particles", o.particles,
                          "each N once (the pooled scatter takes every N's runs as independent)");
   require_usable_directory("--out", o.out);  // created, and a file written in it, before the work
@@ -288,16 +291,21 @@ void add_bench_command(CLI::App& app) {
                 "coefficient table: CPU time vs tolerance and error reached");
   cmd->add_flag("--simulation", o->simulation,
                 "flux gas: error of A vs CPU seconds over N (same work each)");
-  add_list_option(cmd, "--particles", o->particles, "N values (comma separated)",
-                  integer_in(100, 10000000));
-  cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
-      ->transform(integer_in(1000, 1000000000))
-      ->capture_default_str();
+  CLI::Option* particles = add_list_option(cmd, "--particles", o->particles,
+                                           "N values (comma separated)", integer_in(100, 10000000));
+  CLI::Option* work =
+      cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
+          ->transform(integer_in(1000, 1000000000))
+          ->capture_default_str();
   cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
       ->transform(integer_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
-  set_callback_with_config(cmd, [o] { run_bench(*o); });
+  set_callback_with_config(cmd, [o, particles, work] {
+    if (particles->count() > 0) o->simulation_flag_given = "--particles";
+    if (work->count() > 0) o->simulation_flag_given = "--work";
+    run_bench(*o);
+  });
 }
 
 }  // namespace molchaos::app
