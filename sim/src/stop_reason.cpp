@@ -46,7 +46,7 @@ std::string describe(StopReason reason, double t_stop, double tc) {
                            message_time(tc) +
                            " is shorter than the time between these collisions; a larger tc "
                            "avoids it)"
-                     : std::string(" (inelastic collapse; the TC model, tc > 0, avoids it)"));
+                     : std::string(" (inelastic collapse; the TC model, simulate --tc > 0, avoids it)"));
     case StopReason::stalled:
       return "stalled: " + std::to_string(k_stall_events) +
              " events without a collision at the same time t = " + std::to_string(t_stop) +

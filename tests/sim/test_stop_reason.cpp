@@ -15,7 +15,7 @@ BOOST_AUTO_TEST_CASE(plain_reasons_are_their_names) {
 BOOST_AUTO_TEST_CASE(collapse_and_stall_name_the_time_and_threshold) {
   BOOST_TEST(describe(StopReason::collapse, 12.5) ==
              "collapse: 100000 consecutive collisions less than 1e-10 mean free times apart at "
-             "t = 12.500000 (inelastic collapse; the TC model, tc > 0, avoids it)");
+             "t = 12.500000 (inelastic collapse; the TC model, simulate --tc > 0, avoids it)");
   BOOST_TEST(describe(StopReason::stalled, 3.0) ==
              "stalled: 10000000 events without a collision at the same time t = 3.000000 (a "
              "numerical dead-lock in the engine; please report it with the parameters)");
