@@ -2,9 +2,11 @@
 header, the summary tables of `molchaos reproduce`, and H5MD trajectories. Each returns a pandas
 DataFrame (or numpy arrays) together with the metadata dict."""
 
+import io
 import os
 import re
 
+import numpy as np
 import pandas as pd
 
 # A `# key = value` header line: the key is one word (a parameter's name); a title or a note with
@@ -46,7 +48,8 @@ def _read_header(path):
     text = []
     comment_lines = 0
     try:
-        with open(path, encoding="utf-8") as f:
+        # utf-8-sig: a byte order mark (as some Windows editors save) is no part of the first line.
+        with open(path, encoding="utf-8-sig") as f:
             for line in f:
                 if not line.startswith("#"):
                     break
@@ -71,18 +74,62 @@ def _read_header(path):
 def _read_rows(path):
     """The data rows of a suite's CSV file. Every file the suite writes ends with a newline, so
     one that does not was cut short (a copy or download broken off): refused, where pandas would
-    fill the cut row's missing columns with NaN without a word."""
+    fill the cut row's missing columns with NaN without a word. So is a row of another number of
+    fields than the column names (_check_field_counts)."""
     with open(path, "rb") as f:
-        f.seek(0, 2)
-        if f.tell() > 0:
-            f.seek(-1, 2)
-            if f.read(1) != b"\n":
-                raise ValueError(f"{path}: ends in the middle of a line (a truncated file?)")
+        data = f.read().removeprefix(b"\xef\xbb\xbf")
+    if data and not data.endswith(b"\n"):
+        raise ValueError(f"{path}: ends in the middle of a line (a truncated file?)")
+    _check_field_counts(path, data)
     try:
-        return pd.read_csv(path, comment="#", float_precision="round_trip")
+        # index_col=False: a field more in every row is not an index column (checked above).
+        return pd.read_csv(io.BytesIO(data), comment="#", index_col=False,
+                           float_precision="round_trip")
     except pd.errors.EmptyDataError:
         raise ValueError(f"{path}: no column names and no rows (an empty or truncated file?)") \
             from None
+
+
+def _check_field_counts(path, data):
+    """Refuses a row whose number of fields differs from the column names', naming its line:
+    pandas takes one field more in every row (a comma at the end of each) as an index column,
+    every name then standing over its neighbour's values, and fills a row cut short with NaN.
+    Fields are split as pandas splits them: at commas outside double quotes, up to a '#' outside
+    quotes (the comment rule; a line starting with one is no row), blank lines skipped; a row
+    ends at its line's end (the suite writes no line break inside quotes). Counted with numpy
+    over the whole file: a snapshot file has a row per particle."""
+    chars = np.frombuffer(data, dtype=np.uint8)
+    ends = np.flatnonzero(chars == ord("\n"))  # the file ends with one, checked before
+    starts = np.concatenate(([0], ends + 1))[:-1]
+    quotes = np.flatnonzero(chars == ord('"'))
+
+    def outside_quotes(positions):
+        """The positions with an even number of quotes before them on their line."""
+        if quotes.size == 0:
+            return positions
+        before = np.searchsorted(quotes, positions) - \
+            np.searchsorted(quotes, starts[np.searchsorted(ends, positions)])
+        return positions[before % 2 == 0]
+
+    content_ends = ends.copy()
+    hashes = outside_quotes(np.flatnonzero(chars == ord("#")))
+    hash_lines, first_hash = np.unique(np.searchsorted(ends, hashes), return_index=True)
+    content_ends[hash_lines] = hashes[first_hash]
+    commas = outside_quotes(np.flatnonzero(chars == ord(",")))
+    fields = np.searchsorted(commas, content_ends) - np.searchsorted(commas, starts) + 1
+
+    def blank(line):
+        return not data[starts[line]:content_ends[line]].strip()
+
+    lines = np.flatnonzero(content_ends > starts)  # the column line and the rows
+    column_line = next((k for k in lines if not blank(k)), None)
+    if column_line is None:
+        return
+    for k in lines[fields[lines] != fields[column_line]]:
+        if not blank(k):
+            raise ValueError(f"{path}: line {k + 1} has {fields[k]} fields, where the column "
+                             f"names on line {column_line + 1} are {fields[column_line]} (a row "
+                             f"cut short, or a comma too many?)")
 
 
 def _require_columns(path, frame, expected, kind):

@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
@@ -123,6 +124,25 @@ std::string path_keyword(const std::string& name, py::handle value) {
   // An empty name would read as "none given": restart="" would start a new run without a word.
   if (path.empty()) throw py::value_error(name + ": the file name is empty");
   return path;
+}
+
+// An output file is written to a temporary beside it and renamed over `path` only at the end (at
+// a checkpoint, after part of the run): a directory there, or a file of another kind (a device,
+// FIFO, socket or symlink, which the rename would replace), is refused now, as the CLI refuses it.
+void require_writable_file(const std::string& name, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw py::value_error(name + ": '" + path + "' is a directory");
+  if (const auto status = fs::symlink_status(path, ec);
+      fs::exists(status) && !fs::is_regular_file(status))
+    throw py::value_error(name + ": '" + path +
+                          "' exists and is not a regular file (a device, FIFO, socket or "
+                          "symlink); give a new name or a regular file");
+  try {
+    sim::probe_writable(path);  // a file can be made there: /proc, /sys and over-long names fail
+  } catch (const std::exception& e) {
+    throw py::value_error(name + ": " + e.what());
+  }
 }
 
 // The same combination the CLI prints (theory::predict_cooling), with every error estimate.
@@ -250,17 +270,16 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     sim::default_relaxation_for_method(p);
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
-  if (!checkpoints.path.empty()) {
-    try {
-      sim::probe_writable(checkpoints.path);  // now, not at the first checkpoint after the work
-    } catch (const std::exception& e) {
-      throw py::value_error(std::string("checkpoint: ") + e.what());
-    }
-  }
+  if (!checkpoints.path.empty()) require_writable_file("checkpoint", checkpoints.path);
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
-    throw py::value_error(e.what());  // the message starts with the field's name
+    // The message starts with the field's name: the keyword's, but where it was given as `dim`.
+    std::string message = e.what();
+    for (const auto& [info, keyword] : given)
+      if (const std::string field = std::string(info->name) + ":"; message.starts_with(field))
+        message.replace(0, field.size() - 1, keyword);
+    throw py::value_error(message);
   }
   return p;
 }
@@ -385,8 +404,8 @@ py::dict simulate(const py::kwargs& kwargs) {
     try {
       py::gil_scoped_release release;  // the engine touches no Python object
       result = sim::run_with_checkpoints(p, look_at_signals, checkpoints);
-    } catch (const sim::CheckpointError& e) {
-      throw py::value_error(e.what());
+    } catch (const sim::CheckpointError& e) {  // the checkpoint continued: restart's file
+      throw py::value_error(std::string("restart: ") + e.what());
     } catch (const RunInterrupted&) {
       result.reset();
     }

@@ -2,6 +2,7 @@
 
 import json
 import math
+import os
 import re
 import subprocess
 import sys
@@ -58,8 +59,8 @@ def test_theory_refuses_the_density_the_cli_refuses(molchaos_bin, restitution):
         [molchaos_bin, "theory", "--restitution", str(restitution), "--density", "1e-320"],
         capture_output=True, text=True)
     assert cli.returncode == 2
-    smallest = re.search(r"allowed range \(([0-9.e+-]+), 1\.154701\)", cli.stderr).group(1)
-    with pytest.raises(ValueError, match=rf"density: .*allowed range \({smallest}, 1\.154701\)"):
+    smallest = re.search(r"allowed range \(([0-9.e+-]+), 1\.1547005383792517\)", cli.stderr).group(1)
+    with pytest.raises(ValueError, match=rf"density: .*allowed range \({smallest}, 1\.1547005383792517\)"):
         molchaos.theory(restitution=restitution, density=1e-320)
     # Just above the smallest density, the prediction is finite.
     A = molchaos.theory(restitution=restitution, density=2 * float(smallest))["A"]["value"]
@@ -239,6 +240,48 @@ def test_simulate_refuses_an_unwritable_checkpoint_before_the_run():
         molchaos.simulate(**SMALL, checkpoint="/proc/run.ckpt", checkpoint_interval=1.0)
     with pytest.raises(ValueError, match=r"checkpoint_interval: value inf is outside .*\[0, inf\)"):
         molchaos.simulate(**SMALL, checkpoint="run.ckpt", checkpoint_interval=float("inf"))
+
+
+@pytest.mark.parametrize("kind", ["directory", "fifo", "symlink"])
+def test_simulate_refuses_a_checkpoint_path_that_is_no_regular_file(tmp_path, kind):
+    # Was: a directory passed the up-front check and failed after the run ("rename failed (Is a
+    # directory)"); a FIFO or a symlink was replaced by the checkpoint. The CLI refuses each.
+    path = tmp_path / "run.ckpt"
+    if kind == "directory":
+        path.mkdir()
+        reason = "is a directory"
+    elif kind == "fifo":
+        os.mkfifo(path)
+        reason = "exists and is not a regular file"
+    else:
+        (tmp_path / "target.ckpt").write_bytes(b"")
+        path.symlink_to(tmp_path / "target.ckpt")
+        reason = "exists and is not a regular file"
+    before = os.lstat(path)
+    with pytest.raises(ValueError, match=rf"^checkpoint: '{re.escape(str(path))}' {reason}"):
+        molchaos.simulate(**SMALL, checkpoint=path, checkpoint_interval=1.0)
+    after = os.lstat(path)  # left as it was
+    assert (after.st_ino, after.st_mode) == (before.st_ino, before.st_mode)
+
+
+@pytest.mark.parametrize("make", [lambda path: path.mkdir(), lambda path: None],
+                         ids=["directory", "missing"])
+def test_simulate_names_restart_for_a_checkpoint_it_cannot_read(tmp_path, make):
+    # Was: "checkpoint ...: not a file", which reads as if the checkpoint keyword were meant.
+    path = tmp_path / "run.ckpt"
+    make(path)
+    with pytest.raises(ValueError, match=rf"^restart: checkpoint {re.escape(str(path))}: "
+                                         r"not a file"):
+        molchaos.simulate(**SMALL, restart=path)
+
+
+def test_simulate_names_dim_or_dimension_as_given():
+    # Was: "dimension: ..." for dim=1, a name the caller did not use.
+    with pytest.raises(ValueError, match=r"^dim: value 1 is outside the allowed range \[2, 3\]"):
+        molchaos.simulate(**dict(SMALL, dim=1))
+    small = {k: v for k, v in SMALL.items() if k != "dim"}
+    with pytest.raises(ValueError, match=r"^dimension: value 4 is outside the allowed range"):
+        molchaos.simulate(**small, dimension=4)
 
 
 def test_simulate_refuses_dim_and_dimension_together():

@@ -78,3 +78,71 @@ def test_read_trajectory_refuses_other_files_naming_them(files, tmp_path):
         molchaos.read_trajectory(cut)
     with pytest.raises(FileNotFoundError):
         molchaos.read_trajectory(tmp_path / "missing.h5")
+
+
+def rewrite_rows(source, target, change):
+    """A copy of source with change(k, row) for each data row k (from 0) and the line number of
+    its column names; change returns the row's new text."""
+    lines = source.read_bytes().split(b"\n")
+    column_line = next(i for i, line in enumerate(lines) if not line.startswith(b"#"))
+    rows = range(column_line + 1, len(lines) - 1)  # the last is the empty one after the newline
+    for k, i in enumerate(rows):
+        lines[i] = change(k, lines[i])
+    target.write_bytes(b"\n".join(lines))
+    return column_line + 1
+
+
+@pytest.mark.parametrize("reader,name", [(molchaos.read_run_csv, "run.csv"),
+                                         (molchaos.read_snapshot_csv, "run.snapshot0.csv"),
+                                         (molchaos.read_table, "run.csv")])
+def test_a_comma_at_the_end_of_every_row_is_refused(files, reader, name, tmp_path):
+    # Was: read with the first column as the index, every name over its neighbour's values ('t'
+    # holding T), the '# rows' count still right.
+    edited = tmp_path / "edited.csv"
+    column_line = rewrite_rows(files / name, edited, lambda k, row: row + b",")
+    fields = (files / name).read_text().split("\n")[column_line - 1].count(",") + 1
+    with pytest.raises(ValueError, match=rf"edited\.csv: line {column_line + 1} has {fields + 1} "
+                                         rf"fields, where the column names on line "
+                                         rf"{column_line} are {fields} "):
+        reader(edited)
+
+
+@pytest.mark.parametrize("reader,name", [(molchaos.read_run_csv, "run.csv"),
+                                         (molchaos.read_snapshot_csv, "run.snapshot0.csv"),
+                                         (molchaos.read_table, "run.csv")])
+def test_a_row_cut_short_or_too_long_in_the_middle_is_refused(files, reader, name, tmp_path):
+    # Was: the short row's missing columns filled with NaN without a word.
+    short, long = tmp_path / "short.csv", tmp_path / "long.csv"
+    column_line = rewrite_rows(files / name, short,
+                               lambda k, row: row.rsplit(b",", 2)[0] if k == 20 else row)
+    rewrite_rows(files / name, long, lambda k, row: row + b",1" if k == 20 else row)
+    with pytest.raises(ValueError, match=rf"short\.csv: line {column_line + 21} has "):
+        reader(short)
+    with pytest.raises(ValueError, match=rf"long\.csv: line {column_line + 21} has "):
+        reader(long)
+
+
+def test_quoted_commas_and_comment_lines_after_the_rows_are_no_fields(tmp_path):
+    # As `molchaos reproduce` and `molchaos bench` write their tables: quoted text with commas,
+    # empty fields, '#' lines after the rows.
+    table = tmp_path / "table.csv"
+    table.write_text('# a table\nd,quantity,measured,note\n'
+                     '2,"S_perp(k, tau)",,"a note, ""quoted"" # not a comment"\n'
+                     '3,plain,1.5,\n# target 1 %: cheapest N = 3, with 4 seeds\n')
+    frame, meta = molchaos.read_table(table)
+    assert frame["quantity"].tolist() == ["S_perp(k, tau)", "plain"]
+    assert frame["note"][0] == 'a note, "quoted" # not a comment'
+    assert frame["measured"][1] == 1.5 and meta == {"description": "a table"}
+
+
+@pytest.mark.parametrize("reader,name", [(molchaos.read_run_csv, "run.csv"),
+                                         (molchaos.read_snapshot_csv, "run.snapshot0.csv"),
+                                         (molchaos.read_table, "run.csv")])
+def test_a_byte_order_mark_is_no_part_of_the_header(files, reader, name, tmp_path):
+    # Was: the first line read as "\ufeff# molchaos ...", no header at all: metadata {}.
+    marked = tmp_path / name
+    marked.write_bytes(b"\xef\xbb\xbf" + (files / name).read_bytes())
+    frame, meta = reader(marked)
+    plain_frame, plain_meta = reader(files / name)
+    assert meta == plain_meta and meta["particles"] == 150
+    assert frame.equals(plain_frame)
