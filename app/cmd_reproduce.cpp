@@ -2,11 +2,19 @@
 // REPORT.html, fig4_A_of_eps.csv, a2_of_eps.csv. Runs are cached in <out>/cache, so an interrupted
 // reproduction resumes.
 #include <fmt/format.h>
+#include <signal.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -36,6 +44,126 @@ struct ReproduceCliOptions {
   bool quiet = false;
 };
 
+// SIGINT and SIGTERM. During the runs (and the analyses between them) their default action
+// stays: every finished run is in the cache already, written whole (temporary name, then rename),
+// so the handler only says so before the process ends. From the figures on, the handler records the
+// signal instead: the figure being rendered ends its gnuplot and removes its temporaries
+// (figures::RenderOptions::interrupt), and the command then ends by the signal's default action, so
+// that the parent sees the signal (a shell's exit status 128 + signal) as without the handler.
+std::atomic<bool> g_interrupt{false};
+std::atomic<bool> g_runs_done{false};
+volatile std::sig_atomic_t g_signal = 0;
+std::string g_runs_message;  // built before the handler is installed, not changed after
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+extern "C" void on_reproduce_signal(int signal) {
+  if (!g_runs_done.load()) {
+    // write(), signal() and raise() are async-signal-safe.
+    [[maybe_unused]] const ssize_t written =
+        ::write(STDERR_FILENO, g_runs_message.data(), g_runs_message.size());
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+    return;
+  }
+  g_signal = signal;
+  g_interrupt.store(true);
+}
+
+// A signal that was ignored when the command started (nohup, a background job of a shell without
+// job control) stays ignored. SA_RESTART: the runs' threads see no EINTR.
+void install_reproduce_signals(const std::string& cache_directory) {
+  g_runs_message = fmt::format(
+      "molchaos: reproduce interrupted during the runs and analyses; the cache {} keeps every "
+      "finished run, and the same command continues from them\n",
+      cache_directory);
+  for (const int signal : {SIGINT, SIGTERM}) {
+    struct sigaction before {};
+    sigaction(signal, nullptr, &before);
+    if (before.sa_handler == SIG_IGN) continue;
+    struct sigaction action {};
+    action.sa_handler = on_reproduce_signal;
+    action.sa_flags = SA_RESTART;
+    sigemptyset(&action.sa_mask);
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+// Ends the command as the recorded signal would have: one line on stderr saying what it stopped,
+// then the signal's default action (std::_Exit only if that somehow returns).
+[[noreturn]] void end_by_signal(const std::string& stopped, const std::string& cache_directory) {
+  const int signal = g_signal;
+  std::cout.flush();
+  std::fprintf(stderr,
+               "molchaos: reproduce stopped by %s %s; the cache %s keeps every finished run, and "
+               "the same command writes the figures and the report from it\n",
+               signal == SIGINT ? "SIGINT" : "SIGTERM", stopped.c_str(), cache_directory.c_str());
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+  std::_Exit(128 + signal);
+}
+
+void stop_if_interrupted(const std::string& stopped, const std::string& cache_directory) {
+  if (g_interrupt.load()) end_by_signal(stopped, cache_directory);
+}
+
+// The command line as the report names it: the options that change what the report says. --out,
+// --cache, --threads, --quiet and --relax-each-run change where the files go and how fast they
+// come, not their content, so the same options give the same report byte for byte.
+std::string report_command(const ReproduceCliOptions& o) {
+  std::string command = "molchaos reproduce";
+  if (o.quick) command += " --quick";
+  if (o.seeds > 0) command += fmt::format(" --seeds {}", o.seeds);
+  if (!o.figures) command += " --no-figures";
+  return command;
+}
+
+#ifdef MOLCHAOS_HAVE_FIGURES
+// The figures' file names (relative to the report). An interrupt ends the command here, with the
+// temporaries of the figure under way removed.
+std::vector<std::string> render_figures(const validation::ReproduceResults& results,
+                                        const figures::RenderOptions& ro,
+                                        const std::string& cache_directory) {
+  std::vector<std::string> figure_files;
+  const auto keep = [&](const figures::RenderedFigure& f, const char* extension) {
+    for (const auto& file : f.files)
+      if (file.ends_with(extension))
+        figure_files.push_back(std::filesystem::path(file).filename().string());
+  };
+  try {
+    keep(figures::render_fig3(results.fig3, ro), ".png");
+    keep(figures::render_fig4(results.fig4, ro), ".png");
+    keep(figures::render_b(results.b, ro), ".png");
+    keep(figures::render_a2(results.a2, ro), ".png");
+    keep(figures::render_snapshot(results.snapshot, ro), ".png");
+    keep(figures::render_pair_correlations(results.correlations.pair_correlations, 2, 0.1, 0.8, ro),
+         ".png");
+    keep(figures::render_contact_moments(results.correlations.contact_moments, ro), ".png");
+    keep(figures::render_cooling_decomposition(results.correlations.decomposition, ro), ".png");
+    keep(figures::render_impact_parameter(results.correlations.impact_parameter, ro), ".png");
+    // The break-down figures exist at paper scale only (the quick look skips their runs).
+    if (results.gas_fields.series.empty()) return figure_files;
+    const auto spec3 = validation::BreakdownSpec::three_dimensional();
+    keep(figures::render_flow_field(results.gas_fields.fields, ro), ".png");
+    keep(figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro),
+         ".png");
+    keep(figures::render_linear_hydrodynamics(
+             results.breakdown_curves_3d,
+             fmt::format("d = 3, n = {}, ε = {}", spec3.density, spec3.restitution),
+             "fig_structure_factor_3d", ro),
+         ".png");
+    // The animation needs gnuplot's gif terminal; without it the report says so.
+    if (figures::gnuplot_has_terminal("gif", ro))
+      keep(figures::render_flow_field_animation(results.gas_fields.animation, ro), ".gif");
+  } catch (const figures::Interrupted& e) {
+    end_by_signal(fmt::format("while {} (its temporary files removed; {} figure(s) written "
+                              "before it, no tables, no report)",
+                              e.what(), figure_files.size()),
+                  cache_directory);
+  }
+  return figure_files;
+}
+#endif
+
 void run_reproduce(const ReproduceCliOptions& o) {
   auto cfg = o.quick ? validation::ReproduceConfig::quick_look()
                      : validation::ReproduceConfig::paper_scale();
@@ -55,55 +183,30 @@ void run_reproduce(const ReproduceCliOptions& o) {
   sweep.runner = default_sweep_runner();
   sweep.label = o.quick ? "reproduce --quick" : "reproduce";
   sweep.progress = !o.quiet;
-  sim::remove_stale_temporaries(o.out);  // figures and tables of a killed earlier run
+  // Figures and tables of a killed earlier run, at any age: a writer on this host whose process
+  // is gone leaves nothing that anyone finishes (the age rule is for other hosts' writers).
+  sim::remove_stale_temporaries(o.out, 0.0);
+  install_reproduce_signals(sweep.cache_directory);
   if (!o.quiet)
     std::cerr << fmt::format(
         "[reproduce] {}: N = {}, {} restitutions x {} densities x 3 modes x {} seeds, "
         "plus Fig. 3 and the elastic-limit runs; cache {}\n",
         o.quick ? "quick look" : "paper scale", cfg.particles, cfg.restitutions.size(),
         cfg.densities.size(), cfg.seeds, sweep.cache_directory);
-  const auto results = validation::reproduce(cfg, sweep);
+  auto results = validation::reproduce(cfg, sweep);
+  g_runs_done.store(true);
+  validation::withhold_undecidable_verdicts(results.claims, cfg.seeds);
 
   std::vector<std::string> figure_files;
 #ifdef MOLCHAOS_HAVE_FIGURES
   if (o.figures) {
     figures::RenderOptions ro;
     ro.output_directory = o.out;
-    for (const auto& f :
-         {figures::render_fig3(results.fig3, ro), figures::render_fig4(results.fig4, ro),
-          figures::render_b(results.b, ro), figures::render_a2(results.a2, ro),
-          figures::render_snapshot(results.snapshot, ro),
-          figures::render_pair_correlations(results.correlations.pair_correlations, 2, 0.1, 0.8,
-                                            ro),
-          figures::render_contact_moments(results.correlations.contact_moments, ro),
-          figures::render_cooling_decomposition(results.correlations.decomposition, ro),
-          figures::render_impact_parameter(results.correlations.impact_parameter, ro)})
-      for (const auto& file : f.files)
-        if (file.ends_with(".png"))
-          figure_files.push_back(std::filesystem::path(file).filename().string());
-    // The break-down figures exist at paper scale only (the quick look skips their runs).
-    if (!results.gas_fields.series.empty()) {
-      const auto spec3 = validation::BreakdownSpec::three_dimensional();
-      for (const auto& f :
-           {figures::render_flow_field(results.gas_fields.fields, ro),
-            figures::render_structure_factors(results.breakdown_curves, results.gas_fields, ro),
-            figures::render_linear_hydrodynamics(
-                results.breakdown_curves_3d,
-                fmt::format("d = 3, n = {}, ε = {}", spec3.density, spec3.restitution),
-                "fig_structure_factor_3d", ro)})
-        for (const auto& file : f.files)
-          if (file.ends_with(".png"))
-            figure_files.push_back(std::filesystem::path(file).filename().string());
-      // The animation needs gnuplot's gif terminal; without it the report says so.
-      if (figures::gnuplot_has_terminal("gif", ro))
-        for (const auto& file :
-             figures::render_flow_field_animation(results.gas_fields.animation, ro).files)
-          if (file.ends_with(".gif"))
-            figure_files.push_back(std::filesystem::path(file).filename().string());
-    }
+    ro.interrupt = &g_interrupt;
+    figure_files = render_figures(results, ro, sweep.cache_directory);
   }
 #endif
-  const std::string command = o.quick ? "make reproduce QUICK=1" : "make reproduce";
+  stop_if_interrupted("after the figures (no tables, no report)", sweep.cache_directory);
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
   validation::write_file_atomically((std::filesystem::path(o.out) / "a2_of_eps.csv").string(),
@@ -111,12 +214,15 @@ void run_reproduce(const ReproduceCliOptions& o) {
   validation::write_correlation_tables(results.correlations, o.out);
   validation::write_breakdown_tables(results, o.out);
   validation::write_estimator_table(results, o.out);
-  const std::string markdown = validation::report_markdown(results, figure_files, command);
+  stop_if_interrupted("after the tables (no report)", sweep.cache_directory);
+  const std::string markdown =
+      validation::report_markdown(results, figure_files, report_command(o));
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);
   // The same report as one self-contained page, figures embedded.
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.html").string(),
                                     validation::report_html(markdown, o.out));
+  stop_if_interrupted("after writing the report (the output is complete)", sweep.cache_directory);
   std::cout << fmt::format(
       "wrote {}/REPORT.md, {}/REPORT.html, {}/fig4_A_of_eps.csv, {}/a2_of_eps.csv and {} figures "
       "in {:.0f} s\n",

@@ -4,12 +4,15 @@
 #include "figure_script.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -137,9 +140,36 @@ struct ProcessResult {
   std::string error_output;
 };
 
-// Runs gnuplot without a shell, capturing its stderr for the error message.
+bool interrupted(const std::atomic<bool>* interrupt) {
+  return interrupt != nullptr && interrupt->load();
+}
+
+// Appends what gnuplot writes on `fd` (its stderr) to `out` until it closes the pipe; false as
+// soon as `interrupt` is set. Polls, rather than blocks in read(), so that a signal handled on
+// another thread is seen within 100 ms.
+bool read_until_closed(int fd, std::string& out, const std::atomic<bool>* interrupt) {
+  std::array<char, 4096> buffer{};
+  for (;;) {
+    if (interrupted(interrupt)) return false;
+    pollfd readable{fd, POLLIN, 0};
+    const int ready = ::poll(&readable, 1, 100);
+    if (ready == 0 || (ready < 0 && errno == EINTR)) continue;
+    if (ready < 0) return true;  // nothing more to read; waitpid below still waits for gnuplot
+    const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+    if (n > 0) {
+      out.append(buffer.data(), static_cast<std::size_t>(n));
+    } else if (n == 0 || errno != EINTR) {
+      return true;
+    }
+  }
+}
+
+// Runs gnuplot without a shell, capturing its stderr for the error message. When `interrupt` is
+// set, gnuplot is ended (SIGTERM) and waited for, so that no orphan goes on writing temporaries
+// the caller removes, and Interrupted is thrown.
 ProcessResult run_gnuplot(const std::string& executable, const std::vector<std::string>& args,
-                          const std::string& context) {
+                          const std::string& context, const std::atomic<bool>* interrupt) {
+  if (interrupted(interrupt)) throw Interrupted(context);
   std::array<int, 2> pipe_fds{};
   if (::pipe(pipe_fds.data()) != 0) {
     throw std::runtime_error(context + ": cannot create a pipe: " + std::strerror(errno));
@@ -170,20 +200,14 @@ ProcessResult run_gnuplot(const std::string& executable, const std::vector<std::
                              " (install gnuplot with the cairo terminals, e.g. gnuplot-nox)");
   }
   ProcessResult result;
-  std::array<char, 4096> buffer{};
-  for (;;) {
-    const ssize_t n = ::read(pipe_fds[0], buffer.data(), buffer.size());
-    if (n > 0) {
-      result.error_output.append(buffer.data(), static_cast<std::size_t>(n));
-    } else if (n == 0 || errno != EINTR) {
-      break;
-    }
-  }
+  if (!read_until_closed(pipe_fds[0], result.error_output, interrupt)) ::kill(pid, SIGTERM);
   ::close(pipe_fds[0]);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw std::runtime_error(context + ": waitpid failed");
   }
+  // Also when gnuplot ended first: a terminal's Ctrl-C reaches it as well.
+  if (interrupted(interrupt)) throw Interrupted(context);
   result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
 }
@@ -228,7 +252,8 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
   const std::string context = "rendering " + outputs.front().final.string();
   const auto result = run_gnuplot(
       options.gnuplot_executable,
-      {"-e", "targets=" + quote(targets) + "; " + assignments, script_temporary.string()}, context);
+      {"-e", "targets=" + quote(targets) + "; " + assignments, script_temporary.string()}, context,
+      options.interrupt);
   if (result.exit_status != 0) {
     throw std::runtime_error(context + ": gnuplot failed (exit status " +
                              std::to_string(result.exit_status) + ") on its script " +
@@ -401,8 +426,10 @@ namespace molchaos::figures {
 bool gnuplot_has_terminal(const std::string& terminal, const RenderOptions& options) {
   try {
     return detail::run_gnuplot(options.gnuplot_executable, {"-e", "set terminal " + terminal},
-                               "probing gnuplot's " + terminal + " terminal")
+                               "probing gnuplot's " + terminal + " terminal", options.interrupt)
                .exit_status == 0;
+  } catch (const Interrupted&) {
+    throw;
   } catch (const std::runtime_error&) {
     return false;  // no gnuplot at all
   }

@@ -2,15 +2,31 @@
 # Usage: reproduce_one_seed.sh MOLCHAOS
 # One seed per point gives values without standard errors: the report and every figure are still
 # written (b at contact, which needs the error of the mean dyad, is left out of its figure), where
-# the reproduction failed with "BData.panels[0].series[2].restitution is empty".
+# the reproduction failed with "BData.panels[0].series[2].restitution is empty". A verdict that
+# needs a standard error says it is not decided (it said "not reproduced" on a χ² of 0 points).
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
 enter_scratch_folder
 
 "$bin" reproduce --quick --seeds 1 --threads 2 --out one --cache one/cache >log.txt 2>&1 ||
-  { cat log.txt; echo "FAIL: reproduce --quick --seeds 1 failed"; exit 1; }
+  { cat log.txt; fail "reproduce --quick --seeds 1 failed"; }
 for f in REPORT.md fig4_A_of_eps.png fig_b_of_eps.png; do
-  [ -s "one/$f" ] || { echo "FAIL: no one/$f"; exit 1; }
+  [ -s "one/$f" ] || fail "no one/$f"
 done
-echo "ok: reproduce --quick --seeds 1 writes its report and figures"
+# No verdict rests on a standard error that one seed cannot give: the claims that compare
+# simulated values say they are not decided; those on theory alone keep their verdicts.
+report=one/REPORT.md
+for zero in '± 0.0000' 'for 0 points' '(differs)' 'equal within errors'; do
+  # The estimator rows are information, their degrees of freedom beside each shift (0 with one
+  # seed; the least-squares fit's shift from itself is 0 ± 0).
+  ! grep -v 'relative sd of A per run' $report | grep -qF "$zero" ||
+    fail "the report rests a verdict on a zero error: $(grep -v 'relative sd of A per run' $report | grep -F "$zero" | head -2)"
+done
+! grep -Eq '[0-9]{6,}(\.[0-9]+)? SE' $report || fail "a difference of millions of standard errors: $(grep -Eo '[0-9]{6,}(\.[0-9]+)? SE' $report | head -1)"
+grep -Eq '^\| paper 5 \| .* \| \*\*not decided\*\* \| one seed per point gives no standard errors' $report ||
+  fail "the Haff claim of the randomized gas is not 'not decided': $(grep '^| paper 5 ' $report)"
+grep -Eq '^\| suite 11 \| .* \| \*\*not decided\*\* \|' $report || fail "the elastic limit is decided on one run"
+grep -Eq '^\| paper 1 \| .* \| \*\*reproduced\*\* \|' $report || fail "the theory claim lost its verdict"
+grep -q '| not decided |' $report || fail "no comparison row says 'not decided'"
+echo "ok: reproduce --quick --seeds 1 writes its report and figures, its verdicts only where errors decide"

@@ -356,12 +356,28 @@ CorrelationStudy run_correlation_study(const CorrelationStudyConfig& cfg,
   control_claims(S);
   for (auto& c : impact_parameter_claims(S.impact_parameter)) S.claims.push_back(std::move(c));
   S.config = cfg;
+  S.version = sweep.version;
   S.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return S;
 }
 
+namespace {
+
+// The '#' lines that open each table of the study: what ran and the code version, as every result
+// file of the suite carries them, so that a table can be traced to its build.
+std::string table_header(const CorrelationStudy& S) {
+  const auto& c = S.config;
+  return fmt::format(
+      "# molchaos reproduce, correlation study: particles = {}, seeds = {} (d = 2), {} (d = 3), "
+      "base_seed = {}; window: the Haff fit's\n# version = {}\n",
+      c.particles, c.contact_seeds, c.seeds_3d, c.base_seed, S.version);
+}
+
+}  // namespace
+
 std::string contact_moments_csv(const CorrelationStudy& S) {
   std::string out =
+      table_header(S) +
       "dimension,density,restitution,randomize,runs,omega_over_enskog,omega_over_enskog_err,"
       "gn2_over_4T,gn2_over_4T_err,c1e_c2e,c1e_c2e_err,c1_dot_c2,c1_dot_c2_err,a2,a2_err,A,A_err,"
       "impact_chi2,impact_dof\n";
@@ -378,6 +394,7 @@ std::string contact_moments_csv(const CorrelationStudy& S) {
 
 std::string pair_correlations_csv(const CorrelationStudy& S) {
   std::string out =
+      table_header(S) +
       "dimension,density,restitution,randomize,tau,snapshots,side,r_lo,r_hi,g,g_err,G_par,"
       "G_par_err,G_perp,G_perp_err,G_par_err_snapshots,G_perp_err_snapshots,pairs\n";
   for (const auto& r : S.pair_correlations)
@@ -393,16 +410,12 @@ std::string pair_correlations_csv(const CorrelationStudy& S) {
 void write_correlation_tables(const CorrelationStudy& S, const std::string& directory) {
   write_file_atomically(directory + "/contact_moments.csv", contact_moments_csv(S));
   write_file_atomically(directory + "/pair_correlations.csv", pair_correlations_csv(S));
-  const auto& c = S.config;
-  write_file_atomically(
-      directory + "/impact_parameter.csv",
-      impact_parameter_csv(
-          S.impact_parameter,
-          fmt::format("# molchaos reproduce, correlation study: particles = {}, seeds = {} (d = "
-                      "2), {} (d = 3), base_seed = {}; window: the Haff fit's\n"
-                      "# impact parameter s = (1 - (g.e/|g|)^2)^((d-1)/2) of the colliding "
-                      "pairs, uniform under molecular chaos\n",
-                      c.particles, c.contact_seeds, c.seeds_3d, c.base_seed)));
+  write_file_atomically(directory + "/impact_parameter.csv",
+                        impact_parameter_csv(S.impact_parameter,
+                                             table_header(S) +
+                                                 "# impact parameter s = (1 - (g.e/|g|)^2)^((d-1)/2) "
+                                                 "of the colliding pairs, uniform under molecular "
+                                                 "chaos\n"));
 }
 
 }  // namespace molchaos::validation

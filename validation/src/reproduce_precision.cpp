@@ -111,7 +111,8 @@ namespace molchaos::validation {
 void write_estimator_table(const ReproduceResults& R, const std::string& directory) {
   using steps::gases;
   std::string csv = fmt::format(
-      "# molchaos reproduce: tau0 estimators on the same Fig. 4 runs (version {})\n"
+      "# molchaos reproduce: tau0 estimators on the same Fig. 4 runs\n"
+      "# version = {}\n"
       "# relative_sd_per_run pooled over the gas's points; cost_ratio = (sd/sd_least_squares)^2;\n"
       "# shift = A/A_least_squares - 1 run by run, mean and standard error\n"
       "gas,estimator,relative_sd_per_run,degrees_of_freedom,cost_ratio,shift,shift_err,"

@@ -4,6 +4,8 @@
 // re-plotted.
 #pragma once
 
+#include <atomic>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,16 @@ struct RenderOptions {
   bool pdf = true;
   bool png = true;
   std::string gnuplot_executable = "gnuplot";  ///< looked up on PATH unless it contains a '/'
+  /// Set (from a SIGINT or SIGTERM handler) to stop: the gnuplot under way is ended and waited
+  /// for, the figure's temporaries are removed, and the render call throws Interrupted. Checked
+  /// at least every 100 ms while gnuplot runs.
+  const std::atomic<bool>* interrupt = nullptr;
+};
+
+/// A render call stopped by RenderOptions::interrupt; it left no file of its own behind.
+class Interrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// The files a render call wrote, all complete: the images and the gnuplot script (`.gp`).

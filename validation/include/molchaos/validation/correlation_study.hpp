@@ -52,13 +52,15 @@ struct CorrelationStudy {
   int failed_runs = 0;
   double seconds = 0.0;
   CorrelationStudyConfig config;  ///< what ran (the tables' headers)
+  std::string version;            ///< code version (SweepOptions::version), in the tables' headers
 };
 
 /// Runs (or loads from the cache) everything the study needs and analyses it.
 CorrelationStudy run_correlation_study(const CorrelationStudyConfig& config,
                                        const SweepOptions& sweep);
 
-/// The two tables as CSV text (header line, then one row per record).
+/// The two tables as CSV text: '#' lines (what ran, the code version), the column names, then one
+/// row per record.
 std::string contact_moments_csv(const CorrelationStudy& study);
 std::string pair_correlations_csv(const CorrelationStudy& study);
 

@@ -27,6 +27,15 @@ std::string a2_csv(const ReproduceResults& results);
 /// at; empty for a figure the report does not know.
 std::string figure_caption(const std::string& file, const ReproduceResults& results);
 
+/// A claim can be decided only on simulated values that carry a standard error. Where one of its
+/// comparison rows compares a simulated value without one (a mean over fewer than two runs, which
+/// holds the error 0: one seed per point) with theory, another gas or the paper, the claim's
+/// verdict becomes "not decided", its deciding text says why, and each such row's verdict too,
+/// with no difference in standard errors. Claims resting on theory alone, on a χ² statistic or on
+/// runs of their own with errors keep theirs.
+/// `seeds` is the seeds per point the reproduction ran (for the wording).
+void withhold_undecidable_verdicts(std::vector<Claim>& claims, int seeds);
+
 /// The Markdown report. `figures` lists the figure files (relative to the report) to embed;
 /// `command` is the command line that produced it.
 std::string report_markdown(const ReproduceResults& results,
