@@ -39,6 +39,13 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   require_dimension(in.dimension);
   require_density(in.dimension, in.density);
   require_restitution(in.restitution);
+  if (in.quadrature.method != QuadratureMethod::gauss) {
+    // The inputs' checks (the allowed b, A and τ0 within a double) by the exact Gauss rules
+    // first, in milliseconds: the adaptive quadrature takes seconds before it reaches them.
+    CoolingInputs screen = in;
+    screen.quadrature = QuadratureOptions{};
+    predict_cooling(screen);
+  }
   CoolingPrediction out;
   out.packing_fraction = packing_fraction(in.dimension, in.density);
   out.g2 = contact_value_g2(in.dimension, out.packing_fraction);
