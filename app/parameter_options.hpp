@@ -76,7 +76,8 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
                 ->transform(parameter_check(info))
                 ->default_str(sim::format_value(p, info));
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-            cmd->add_option(flag, target, help)->transform(parameter_check(info));
+            // Values as several arguments (0 1 10) or comma separated (0,1,10), as a sweep's lists.
+            add_list_option(cmd, flag, target, help, parameter_check(info));
           } else {
             cmd->add_option(flag, target, help)
                 ->transform(parameter_check(info))

@@ -80,8 +80,9 @@ mkdir data.v2 sub
 (cd sub && "$bin" simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 --quiet --out ../run 2>/dev/null) || fail "simulate ../run"
 [ -f run.snapshot0.csv ] || fail "snapshot of ../run not at ./run.snapshot0.csv: $(ls -a)"
 # A run that stops before its later snapshot times takes the earlier run's files there away.
-"$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5 25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv"
-[ -f stop.snapshot1.csv ] || fail "no snapshot 1 of stop.csv"
+# (The times comma separated here, as a sweep's lists are; as several arguments below.)
+"$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5,25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv"
+[ -f stop.snapshot1.csv ] && grep -qx "# snapshot_times = 0.5 25" stop.csv || fail "no snapshot 1 of stop.csv"
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5 25 --max-collisions 100 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, stopped early"
 grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && [ ! -e stop.snapshot1.csv ] ||
   fail "the earlier run's snapshot at a time the new run did not reach stayed: $(ls stop*)"
