@@ -41,8 +41,9 @@ bool ends_with(const std::string& text, const std::string& tail) {
 
 // What a --config file holds, by its content. An extended XYZ file: a particle count on its first
 // line, its comment line with Properties=. A result CSV: "# key = value" lines and then a column
-// line, which has no '='; a TOML file's first line that is no comment is a key = value line (a
-// TOML file of comments alone is TOML too: its commented-out keys are no keys).
+// line, names between commas and no '='; in a TOML file the first line that is no comment is a
+// key = value line (or a table, which read_toml refuses), and a TOML file of comments alone is
+// TOML too: its commented-out keys are no keys.
 enum class Kind { toml, csv, xyz };
 
 Kind kind_of(const std::string& text) {
@@ -60,7 +61,9 @@ Kind kind_of(const std::string& text) {
   for (std::string line; std::getline(in, line);) {
     const std::string content = trim(line);
     if (content.empty() || content[0] == '#') continue;
-    return content.find('=') == std::string::npos ? Kind::csv : Kind::toml;
+    const bool columns =
+        content.find('=') == std::string::npos && content.find(',') != std::string::npos;
+    return columns ? Kind::csv : Kind::toml;
   }
   return Kind::toml;
 }

@@ -121,6 +121,8 @@ printf 'dimension = 3\ndim = 2\n' >aliases.toml
 refused "aliases.toml: key 'dim' sets --dim again \(first as 'dimension'\)" simulate --config aliases.toml
 printf '[simulate]\ndensity = 0.1\n' >table.toml
 refused "table.toml line 1: tables are not used" simulate --config table.toml
+printf '# settings\n[simulate]\ndensity = 0.1\n' >commented_table.toml
+refused "commented_table.toml line 2: tables are not used" simulate --config commented_table.toml
 printf 'seeds = 0\n' >seeds.toml
 refused "key 'seeds'.*--seeds.*\[1, 100000\]" sweep --config seeds.toml
 printf 'b = 2\n' >b.toml
