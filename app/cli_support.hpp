@@ -197,25 +197,24 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
                                   bool create_parent) {
   namespace fs = std::filesystem;
   if (path.empty()) throw UsageError(flag, "empty file name");
+  const auto probe = [&] {
+    try {
+      sim::probe_writable(path);  // no directory or special file; /proc, /sys and over-long names
+    } catch (const std::exception& e) {  // fail now
+      throw UsageError(flag, e.what());
+    }
+  };
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw UsageError(flag, "'" + path + "' is a directory");
-  // The file is replaced by rename: only a regular file (not through a symlink) or a new name.
-  const auto status = fs::symlink_status(path, ec);
-  if (fs::exists(status) && !fs::is_regular_file(status))
-    throw UsageError(flag, "'" + path +
-                               "' exists and is not a regular file (a device, FIFO, socket or "
-                               "symlink); give a new name or a regular file");
+  // A path that exists and is no regular file first (a directory, a FIFO: the file is replaced by
+  // rename), so that the message names it rather than its directory.
+  if (const auto status = fs::symlink_status(path, ec);
+      fs::exists(status) && !fs::is_regular_file(status))
+    probe();
   const fs::path parent = fs::path(path).parent_path();
   if (!create_parent && !parent.empty() && !fs::exists(parent, ec))
     throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
   require_writable_directory(flag, parent.string());
-  if (!create_parent || parent.empty() || fs::exists(parent, ec)) {
-    try {
-      sim::probe_writable(path);  // a real file, so /proc, /sys and over-long names fail now
-    } catch (const std::exception& e) {
-      throw UsageError(flag, e.what());
-    }
-  }
+  if (!create_parent || parent.empty() || fs::exists(parent, ec)) probe();
 }
 
 /// The items of one comma-separated argument ("0.1,0.2" -> {"0.1", "0.2"}), empty ones kept.

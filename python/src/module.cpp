@@ -9,7 +9,6 @@
 #include <csignal>
 #include <cstdint>
 #include <exception>
-#include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
@@ -130,17 +129,9 @@ std::string path_keyword(const std::string& name, py::handle value) {
 // a checkpoint, after part of the run): a directory there, or a file of another kind (a device,
 // FIFO, socket or symlink, which the rename would replace), is refused now, as the CLI refuses it.
 void require_writable_file(const std::string& name, const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw py::value_error(name + ": '" + path + "' is a directory");
-  if (const auto status = fs::symlink_status(path, ec);
-      fs::exists(status) && !fs::is_regular_file(status))
-    throw py::value_error(name + ": '" + path +
-                          "' exists and is not a regular file (a device, FIFO, socket or "
-                          "symlink); give a new name or a regular file");
   try {
-    sim::probe_writable(path);  // a file can be made there: /proc, /sys and over-long names fail
-  } catch (const std::exception& e) {
+    sim::probe_writable(path);  // no directory or special file, and /proc, /sys and over-long
+  } catch (const std::exception& e) {  // names fail now
     throw py::value_error(name + ": " + e.what());
   }
 }

@@ -100,6 +100,13 @@ void write_file_atomically(const std::string& path,
 }
 
 void probe_writable(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory");
+  if (const auto status = fs::symlink_status(path, ec);
+      fs::exists(status) && !fs::is_regular_file(status))
+    throw std::runtime_error("'" + path +
+                             "' exists and is not a regular file (a device, FIFO, socket or "
+                             "symlink); give a new name or a regular file");
   const std::string temporary = temporary_name(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0)

@@ -44,8 +44,10 @@ class StagedFiles {
 void write_file_atomically(const std::string& path,
                            const std::function<void(std::ostream&)>& write);
 
-/// Throws std::runtime_error unless a temporary file can be created (and is removed again) next to
-/// `path`: run before any long work so that an unwritable output fails at once.
+/// Throws std::runtime_error unless `path` can take a file written atomically: it is no directory,
+/// not an existing non-regular file (a device, FIFO, socket or symlink, which the rename would
+/// replace), and a temporary file can be created (and is removed again) next to it. Run before
+/// any long work so that an unwritable output fails at once.
 void probe_writable(const std::string& path);
 
 /// Removes this suite's temporary files in `directory` older than `min_age_seconds` whose writer
