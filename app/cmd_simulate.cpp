@@ -103,8 +103,9 @@ std::string snapshot_path(const std::string& out, std::size_t index) {
 // wait until the files are in place (a signal's default end would leave temporaries behind);
 // temporaries of a writer killed outright are removed by the next run (their age rule in
 // sim::remove_stale_temporaries).
-// The snapshot files of --snapshot-times that the run did not reach (it stopped before) are
-// removed: a run's snapshot names are its own, and an older run's there would pass for its.
+// Snapshot files beyond the run's own (of times it did not reach, or an earlier run's with more
+// snapshots) are removed: a run's snapshot names are its own, and an older run's would pass for
+// its.
 void write_outputs(const SimulateOptions& options, const sim::RunResult& result) {
   const sim::Parameters& p = options.parameters;
   sigset_t signals, before;
@@ -137,9 +138,10 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
   if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz, files);
 #endif
   files.commit();
-  for (std::size_t k = result.snapshots.size(); k < p.snapshot_times.size(); ++k) {
-    std::error_code ignored;
-    std::filesystem::remove(snapshot_path(options.out, k), ignored);
+  // An earlier run's snapshots beyond this run's (a run writes them numbered from 0 on).
+  std::error_code ignored;
+  for (std::size_t k = result.snapshots.size();
+       std::filesystem::remove(snapshot_path(options.out, k), ignored); ++k) {
   }
 }
 

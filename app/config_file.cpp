@@ -42,8 +42,9 @@ bool ends_with(const std::string& text, const std::string& tail) {
 // What a --config file holds, by its content. An extended XYZ file: a particle count on its first
 // line, its comment line with Properties=. A result CSV: "# key = value" lines and then a column
 // line, names between commas and no '='; in a TOML file the first line that is no comment is a
-// key = value line (or a table, which read_toml refuses), and a TOML file of comments alone is
-// TOML too: its commented-out keys are no keys.
+// key = value line (or a table, which read_toml refuses). A file of comments alone is a result
+// header whose rows were cut off when it names the version that wrote it ("# version = "), and
+// TOML otherwise: a TOML file's commented-out keys are no keys.
 enum class Kind { toml, csv, xyz };
 
 Kind kind_of(const std::string& text) {
@@ -65,7 +66,7 @@ Kind kind_of(const std::string& text) {
         content.find('=') == std::string::npos && content.find(',') != std::string::npos;
     return columns ? Kind::csv : Kind::toml;
   }
-  return Kind::toml;
+  return text.find("\n# version = ") != std::string::npos ? Kind::csv : Kind::toml;
 }
 
 // One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.

@@ -38,6 +38,10 @@ cmp run.csv dat_again.csv || fail "the run repeated from its header under anothe
 "$bin" simulate --config /dev/stdin --out piped.csv --quiet <run.toml 2>/dev/null ||
   fail "run from a pipe"
 cmp run.csv piped.csv || fail "the run repeated from its TOML through a pipe differs"
+grep '^#' run.csv >header_only.txt  # a result header without its rows
+"$bin" simulate --config header_only.txt --out header_again.csv --quiet 2>/dev/null ||
+  fail "run from a header without rows"
+cmp run.csv header_again.csv || fail "the run repeated from its header alone differs"
 echo "ok: a result file known by its content; a file read through a pipe"
 # Integers are decimal whatever their leading zeros (read with base 0, 050 would be octal 40),
 # on the command line and in a file; -0 is 0.

@@ -86,6 +86,9 @@ mkdir data.v2 sub
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5 25 --max-collisions 100 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, stopped early"
 grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && [ ! -e stop.snapshot1.csv ] ||
   fail "the earlier run's snapshot at a time the new run did not reach stayed: $(ls stop*)"
+"$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5,10,25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, three snapshots"
+"$bin" simulate --particles 100 --t-end 30 --relax 1 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, no snapshots"
+[ -z "$(ls stop.snapshot* 2>/dev/null)" ] || fail "an earlier run's snapshots stayed beside a run without: $(ls stop*)"
 echo "ok: snapshot paths"
 
 # 9. A signal while the outputs are written: it waits until they are all in place, and no

@@ -102,6 +102,23 @@ BOOST_AUTO_TEST_CASE(real_snapshot_with_shuffled_velocities_has_no_pair_correlat
   BOOST_TEST(bins.front().g.value > 1.0);
 }
 
+// The default grid ends at half the box exactly, for every box a run can have: its last edge
+// computed as a power rounded above it for a quarter of them (2D, n = 0.05, N = 39, 41, 47, 3000),
+// and pair_sums() refused the grid after the whole run.
+BOOST_AUTO_TEST_CASE(default_grid_ends_at_half_the_box) {
+  int beyond = 0;
+  for (int d : {2, 3})
+    for (std::int64_t n = 20; n <= 20000; n += 7) {
+      sim::Parameters p;
+      p.dimension = d;
+      p.particles = n;
+      const double box = sim::box_side(p);
+      const std::vector<double> edges = default_pair_grid(box);
+      beyond += edges.back() != 0.5 * box || !std::is_sorted(edges.begin(), edges.end());
+    }
+  BOOST_TEST(beyond == 0);
+}
+
 BOOST_AUTO_TEST_CASE(cell_list_finds_the_same_pairs_as_all_pairs) {
   std::mt19937_64 rng(3);
   for (int d : {2, 3}) {

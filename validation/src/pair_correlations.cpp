@@ -29,7 +29,10 @@ std::vector<double> pair_grid(double r_max, int near, double near_width, int far
   for (int k = 1; k <= near; ++k) edges.push_back(1.0 + k * near_width);
   const double start = edges.back();
   if (!(r_max > start)) throw std::invalid_argument("pair_grid: r_max must exceed the near bins");
-  for (int k = 1; k <= far; ++k) edges.push_back(start * std::pow(r_max / start, double(k) / far));
+  for (int k = 1; k < far; ++k) edges.push_back(start * std::pow(r_max / start, double(k) / far));
+  // The last edge r_max itself: start (r_max/start)^1 can round a unit in the last place above
+  // it, beyond the half box that pair_sums() allows (the run's snapshots then went unmeasured).
+  if (far > 0) edges.push_back(r_max);
   return edges;
 }
 
