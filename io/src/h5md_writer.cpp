@@ -4,11 +4,10 @@
 #include "molchaos/io/h5md_writer.hpp"
 
 #include <hdf5.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <filesystem>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -185,15 +184,29 @@ void write_contents(hid_t file, const sim::RunResult& r) {
 }  // namespace
 
 void write_h5md_file(const sim::RunResult& r, const std::string& path, sim::StagedFiles& files) {
-  // Written under a temporary name and flushed (a full disk shows here, not in a close nobody
-  // checks); files renames it, or removes it on any failure.
-  const std::string temporary = files.temporary(path);
+  // Built in memory (HDF5's core driver, no backing file) and written as the image's bytes through
+  // files, whose writes are checked: written by HDF5 itself, a full disk failed its flush and then
+  // its close, and the file left open crashed the library's clean-up at exit (a segmentation
+  // fault after the error message). The image costs memory as large as the trajectory's data.
   const Handle file_plist{untimed(H5P_FILE_CREATE), H5Pclose};  // the root group too
-  Handle file{check(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, file_plist.id, H5P_DEFAULT),
-                    temporary.c_str()),
-              H5Fclose};
-  write_contents(file.id, r);
-  check_status(H5Fflush(file.id, H5F_SCOPE_GLOBAL), temporary.c_str());
+  const Handle access{H5Pcreate(H5P_FILE_ACCESS), H5Pclose};
+  check_status(H5Pset_fapl_core(access.id, 1 << 20, /*backing_store=*/false), path.c_str());
+  std::vector<char> image;
+  {
+    Handle file{check(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, file_plist.id, access.id),
+                      path.c_str()),
+                H5Fclose};
+    write_contents(file.id, r);
+    check_status(H5Fflush(file.id, H5F_SCOPE_GLOBAL), path.c_str());
+    const ssize_t size = H5Fget_file_image(file.id, nullptr, 0);
+    if (size < 0) throw std::runtime_error("HDF5: cannot take the image of " + path);
+    image.resize(static_cast<std::size_t>(size));
+    if (H5Fget_file_image(file.id, image.data(), image.size()) != size)
+      throw std::runtime_error("HDF5: cannot take the image of " + path);
+  }
+  files.write(path, [&](std::ostream& out) {
+    out.write(image.data(), static_cast<std::streamsize>(image.size()));
+  });
 }
 
 void write_h5md_file(const sim::RunResult& r, const std::string& path) {

@@ -124,6 +124,17 @@ if mount_small_tmpfs small 64k; then
     [ -z "$leftovers" ] || fail "left behind on a full disk: $leftovers"
     rm -f small/*
   done
+  if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
+    # The H5MD trajectory on a full disk: exit 1 naming it, no crash at exit (HDF5 wrote its
+    # file itself, and a file it could not close crashed its clean-up), nothing left behind.
+    "$bin" simulate --particles 6000 --t-end 1 --relax 1 --snapshot-times 0,1 --quiet --out run.csv \
+      --trajectory small/run.h5 > /dev/null 2> err.txt
+    s=$?
+    [ "$s" -eq 1 ] || fail "full disk (H5MD) gave status $s: $(tail -n 2 err.txt)"
+    grep -q "cannot write small/run.h5: .*No space left" err.txt || fail "full disk (H5MD) not named: $(tail -n 2 err.txt)"
+    [ -z "$(ls -A small)" ] || fail "left behind on a full disk (H5MD): $(ls -A small)"
+    [ ! -e run.csv ] || fail "the run's CSV was put in place although its trajectory failed"
+  fi
   echo "ok: full disk"
   # A full cache disk: the sweep (and reproduce) stops with exit 1 naming the cache folder and
   # the reason, instead of counting runs as failed (which once surfaced in reproduce as
