@@ -5,7 +5,6 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <ostream>
 #include <set>
@@ -248,12 +247,18 @@ std::string allowed_keys(CLI::App* cmd) {
 }  // namespace
 
 ConfigFile read_config_file(const std::string& path) {
-  // Read once, whole: a pipe (--config <(...), /dev/stdin) can be read only once, and the kind of
-  // file is told by what it holds, whatever its name ends in.
+  // Read once: a pipe (--config <(...), /dev/stdin) can be read only once, and the kind of file
+  // is told by what it holds, whatever its name ends in. At most k_read_limit bytes, far more
+  // than any file of options or result header (a result file's rows beyond are not needed), so
+  // that an endless input (/dev/zero) is refused instead of filling the memory.
+  constexpr std::size_t k_read_limit = std::size_t{16} << 20;
   std::ifstream in(path, std::ios::binary);
-  std::string text;
-  if (in) text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw UsageError("--config", "cannot read '" + path + "'");
+  if (!in) throw UsageError("--config", "cannot read '" + path + "'");
+  std::string text(k_read_limit, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(k_read_limit));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (in.bad()) throw UsageError("--config", "cannot read '" + path + "'");
+  const bool cut = text.size() == k_read_limit && in.peek() != std::char_traits<char>::eof();
   static constexpr std::string_view k_hdf5 = "\x89HDF\r\n\x1a\n";
   if (text.starts_with(k_hdf5)) {
 #ifdef MOLCHAOS_HAVE_IO
@@ -281,6 +286,9 @@ ConfigFile read_config_file(const std::string& path) {
       if (ends_with(path, ".csv") && !text.starts_with("#"))
         throw UsageError("--config",
                          path + ": no '# key = value' header (not a molchaos result file)");
+      if (cut)
+        throw UsageError("--config", path + ": longer than 16 MiB and not a result file; a file "
+                                            "of options is a few lines of key = value");
       return {read_toml(lines, path), false};
   }
   return {};

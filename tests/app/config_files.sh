@@ -138,6 +138,7 @@ printf 'simulation = true\nparticles = [50]\n' >bench_range.toml
 refused "--config: bench_range.toml: key 'particles': --particles: value 50 is outside the allowed range \[100, 10000000\]" \
   bench --config bench_range.toml
 refused "--config.*missing.toml" simulate --config missing.toml
+refused "--config: /dev/zero: longer than 16 MiB" simulate --config /dev/zero  # read to its end once
 # An empty list keeps an option's default: refused where that would drop the key unseen (a
 # single value, a sweep's list), accepted for snapshot_times, whose default is the empty list.
 printf 'density = []\n' >empty.toml
