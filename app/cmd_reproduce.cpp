@@ -156,7 +156,7 @@ std::vector<std::string> render_figures(const validation::ReproduceResults& resu
       keep(figures::render_flow_field_animation(results.gas_fields.animation, ro), ".gif");
   } catch (const figures::Interrupted& e) {
     end_by_signal(fmt::format("while {} (its temporary files removed; {} figure(s) written "
-                              "before it, no tables, no report)",
+                              "before it; the tables and the report come after the figures)",
                               e.what(), figure_files.size()),
                   cache_directory);
   }
@@ -197,6 +197,12 @@ void run_reproduce(const ReproduceCliOptions& o) {
   g_runs_done.store(true);
   validation::withhold_undecidable_verdicts(results.claims, cfg.seeds);
 
+  // From here on the folder's files are replaced: an earlier report there would describe the new
+  // figures of an interrupted run as its own.
+  for (const char* report : {"REPORT.md", "REPORT.html"}) {
+    std::error_code ignored;
+    std::filesystem::remove(std::filesystem::path(o.out) / report, ignored);
+  }
   std::vector<std::string> figure_files;
 #ifdef MOLCHAOS_HAVE_FIGURES
   if (o.figures) {
@@ -206,7 +212,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
     figure_files = render_figures(results, ro, sweep.cache_directory);
   }
 #endif
-  stop_if_interrupted("after the figures (no tables, no report)", sweep.cache_directory);
+  stop_if_interrupted("after the figures (the tables and the report come after them)",
+                      sweep.cache_directory);
   validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
   validation::write_file_atomically((std::filesystem::path(o.out) / "a2_of_eps.csv").string(),

@@ -17,6 +17,9 @@ args=(reproduce --quick --threads 1 --quiet --cache "$PWD/cache")
 temporaries() { ls -A "$1" 2>/dev/null | grep 'molchaos-tmp'; }
 for signal in TERM INT; do
   out=$PWD/stopped_$signal
+  # An earlier run's report in the folder: removed when the figures start to be replaced, so that
+  # it does not describe an interrupted run's new figures.
+  mkdir -p "$out" && cp whole/REPORT.md "$out/"
   "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.err" &
   pid=$!
   for _ in $(seq 1200); do  # up to 60 s for the first figure's temporaries
@@ -39,7 +42,7 @@ for signal in TERM INT; do
     pgrep -a -f -- "$out/"
     fail "SIG$signal: gnuplot still runs after reproduce ended"
   fi
-  [ ! -e "$out/REPORT.md" ] || fail "SIG$signal: a report was written"
+  [ ! -e "$out/REPORT.md" ] || fail "SIG$signal: a report was written, or the earlier one kept"
 
   "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.again.err" ||
     { cat "$signal.again.err"; fail "SIG$signal: the run after the interrupt failed"; }
