@@ -96,8 +96,8 @@ void DsmcGas<D>::draw_maxwell_velocities(Rng& rng) {
 
 // Every N/4 collisions: Σu² recomputed exactly (the per-collision updates round), the momentum
 // drift of rounding removed once it matters (momentum_drift.hpp), the internal units reset when
-// the gas has cooled, and B tightened to the current max |u| (a cooling gas
-// leaves it loose, which costs rejections, not accuracy).
+// the gas has cooled, the temperature floor checked, and B tightened to the current max |u| (a
+// cooling gas leaves it loose, which costs rejections, not accuracy).
 template <int D>
 void DsmcGas<D>::bookkeeping() {
   auto sums = [this](double& sum, double& max_u2) {
@@ -123,6 +123,10 @@ void DsmcGas<D>::bookkeeping() {
     sums(sum, max_u2);
   }
   sum_u2_ = sum;
+  // Physical T = T_internal / s², divided twice: s² overflows once s passes 1e154. At the floor
+  // of double precision the run stops, as the MD engine does (the samples would print T = 0).
+  if (sum / (static_cast<double>(n_) * D) / scale_ / scale_ < k_temperature_floor)
+    stop_reason_ = StopReason::temperature_floor;
   bound_ = std::sqrt(max_u2) * k_bound_margin;
   pair_bound2_ = 4.0 * bound_ * bound_;
   next_bookkeeping_ = collisions_ + std::max<std::uint64_t>(n_ / 4, 1);
@@ -229,6 +233,10 @@ typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
         break;
       }
       if (collisions_ == next_bookkeeping_) bookkeeping();
+      if (stop_reason_) {  // the temperature floor (bookkeeping())
+        status = Status::stopped;
+        break;
+      }
       update_rate();
       set_threshold();
     }

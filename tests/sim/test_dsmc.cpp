@@ -419,6 +419,23 @@ BOOST_AUTO_TEST_CASE(cooling_over_forty_decades_keeps_the_centre_of_mass_at_rest
   BOOST_TEST(std::fabs(last.a2) < 0.3);
 }
 
+// Cooling without end (t_end = 1e300): the run stops with temperature_floor when T/T0 falls
+// below 1e-300, as the MD engine does, instead of printing T = 0 once the internal scale's square
+// overflows.
+BOOST_AUTO_TEST_CASE(cooling_stops_at_the_floor_of_double_precision) {
+  Parameters p = gas_parameters(2, 500, 0.5, 9);
+  p.samples_per_decade = 1;
+  const RunResult r = run_dsmc(p);
+  BOOST_REQUIRE(!r.samples.empty());
+  BOOST_TEST_MESSAGE("DSMC: " << stop_message(r) << "; T = " << r.samples.back().temperature);
+  BOOST_TEST((r.stop_reason == StopReason::temperature_floor));
+  BOOST_TEST(r.samples.back().temperature < k_temperature_floor);
+  BOOST_TEST(r.samples.back().temperature > 0.01 * k_temperature_floor);
+  bool positive = true;
+  for (const Sample& s : r.samples) positive = positive && s.temperature > 0;
+  BOOST_TEST(positive);
+}
+
 BOOST_AUTO_TEST_CASE(stops_and_bad_input) {
   Parameters p = gas_parameters(2, 1000, 0.5, 3);
   p.t_end = 1e6;
