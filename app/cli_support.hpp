@@ -88,8 +88,11 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
       [=](std::string& text) -> std::string {
         long long x = 0;
         std::size_t used = 0;
+        const bool spaced = text.empty() || std::isspace(static_cast<unsigned char>(text[0]));
         try {
-          x = std::stoll(text, &used);
+          if (!spaced) x = std::stoll(text, &used);  // (stoll would skip leading spaces)
+        } catch (const std::out_of_range&) {  // digits beyond a 64-bit integer
+          return "value " + text + " is outside the allowed range " + range;
         } catch (...) {
           used = 0;
         }
