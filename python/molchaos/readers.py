@@ -5,6 +5,7 @@ DataFrame (or numpy arrays) together with the metadata dict."""
 import io
 import os
 import re
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -80,11 +81,22 @@ def _read_rows(path):
         data = f.read().removeprefix(b"\xef\xbb\xbf")
     if data and not data.endswith(b"\n"):
         raise ValueError(f"{path}: ends in the middle of a line (a truncated file?)")
+    if re.search(rb"\r(?!\n)", data):  # pandas would end lines there, the count below would not
+        raise ValueError(f"{path}: a carriage return alone ends a line (old Mac line ends); "
+                         "the suite's files end their lines with LF or CR LF")
     _check_field_counts(path, data)
     try:
         # index_col=False: a field more in every row is not an index column (checked above).
-        return pd.read_csv(io.BytesIO(data), comment="#", index_col=False,
-                           float_precision="round_trip")
+        # pandas only warns where it splits a row into more fields than the column names (a
+        # quote inside a field, which the count above takes for an opening one) and drops the
+        # extra ones: an error here.
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", pd.errors.ParserWarning)
+            return pd.read_csv(io.BytesIO(data), comment="#", index_col=False,
+                               float_precision="round_trip")
+    except pd.errors.ParserWarning as warning:
+        raise ValueError(f"{path}: a row with more fields than the column names ({warning})") \
+            from None
     except pd.errors.EmptyDataError:
         raise ValueError(f"{path}: no column names and no rows (an empty or truncated file?)") \
             from None

@@ -146,3 +146,21 @@ def test_a_byte_order_mark_is_no_part_of_the_header(files, reader, name, tmp_pat
     plain_frame, plain_meta = reader(files / name)
     assert meta == plain_meta and meta["particles"] == 150
     assert frame.equals(plain_frame)
+
+
+@pytest.mark.parametrize("text", ['a,b,c\n1, "x,y",2\n', 'a,b,c\n1,p"q,r"s,2\n'])
+def test_a_quote_inside_a_field_is_no_quoted_field(tmp_path, text):
+    # pandas takes such a quote literally and splits the row into more fields than the names,
+    # keeping the first ones with only a warning.
+    table = tmp_path / "quote.csv"
+    table.write_text(text)
+    with pytest.raises(ValueError, match=r"quote\.csv: a row with more fields than the column"):
+        molchaos.read_table(table)
+
+
+def test_a_carriage_return_alone_is_refused(tmp_path):
+    # pandas ends a line there, so the short second row would be filled with NaN.
+    table = tmp_path / "cr.csv"
+    table.write_bytes(b"a,b,c\r1,2,3\r4,5\r\n")
+    with pytest.raises(ValueError, match=r"cr\.csv: a carriage return alone ends a line"):
+        molchaos.read_table(table)
