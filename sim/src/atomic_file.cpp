@@ -83,6 +83,17 @@ void StagedFiles::write(const std::string& path, const std::function<void(std::o
 }
 
 void StagedFiles::commit() {
+  // Every name first, so that a name taken meanwhile by a directory or a special file (which a
+  // rename cannot replace, or should not) stops the set before any file of it is in place.
+  for (const auto& [temporary, path] : staged_) {
+    std::error_code ec;
+    const auto status = fs::symlink_status(path, ec);
+    if (fs::is_directory(status))  // as the rename would say
+      throw std::runtime_error("cannot write " + path + ": rename failed (" + error_text(EISDIR) +
+                               ")");
+    if (fs::exists(status) && !fs::is_regular_file(status))
+      throw std::runtime_error("cannot write " + path + ": not a regular file any more");
+  }
   while (!staged_.empty()) {
     const auto& [temporary, path] = staged_.front();
     if (::rename(temporary.c_str(), path.c_str()) != 0)

@@ -4,11 +4,14 @@
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <sstream>
 #include <vector>
 
+#include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/collision.hpp"
 #include "molchaos/sim/csv.hpp"
 #include "molchaos/sim/event_calendar.hpp"
@@ -296,4 +299,29 @@ BOOST_AUTO_TEST_CASE(event_calendar_always_yields_the_earliest_event) {
       calendar.update(k, times[k]);
     }
   }
+}
+
+// Files staged together appear together: with the second's name taken by a directory before the
+// commit, the first keeps its earlier content, and no temporary is left once the set is dropped.
+BOOST_AUTO_TEST_CASE(staged_files_appear_together_or_not_at_all) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "molchaos_test_staged_files";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string first = (dir / "a.csv").string(), second = (dir / "b.csv").string();
+  std::ofstream(first) << "earlier\n";
+  {
+    StagedFiles files;
+    files.write(first, [](std::ostream& out) { out << "new\n"; });
+    files.write(second, [](std::ostream& out) { out << "new\n"; });
+    fs::create_directories(second);  // the name taken meanwhile
+    BOOST_CHECK_THROW(files.commit(), std::runtime_error);
+  }
+  std::string text;
+  std::getline(std::ifstream(first), text);
+  BOOST_TEST(text == "earlier");
+  int entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  BOOST_TEST(entries == 2);  // a.csv and the directory b.csv: no temporary
+  fs::remove_all(dir);
 }

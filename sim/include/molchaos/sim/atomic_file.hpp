@@ -33,7 +33,9 @@ class StagedFiles {
   void write(const std::string& path, const std::function<void(std::ostream&)>& write);
   /// A temporary name for path, renamed to path by commit() (a writer that opens files itself).
   std::string temporary(const std::string& path);
-  /// Renames every temporary to its file, in the order staged; throws std::runtime_error.
+  /// Renames every temporary to its file, in the order staged, once every name is found free or
+  /// a regular file (a rename failing after that, rare, leaves the set part renamed); throws
+  /// std::runtime_error.
   void commit();
 
  private:
