@@ -29,4 +29,5 @@ grep -Eq '^\| paper 5 \| .* \| \*\*not decided\*\* \| one seed per point gives n
 grep -Eq '^\| suite 11 \| .* \| \*\*not decided\*\* \|' $report || fail "the elastic limit is decided on one run"
 grep -Eq '^\| paper 1 \| .* \| \*\*reproduced\*\* \|' $report || fail "the theory claim lost its verdict"
 grep -q '| not decided |' $report || fail "no comparison row says 'not decided'"
+! grep -q 'jackknife over seeds 0\.0000' $report || fail "a jackknife over one seed is reported as 0"
 echo "ok: reproduce --quick --seeds 1 writes its report and figures, its verdicts only where errors decide"

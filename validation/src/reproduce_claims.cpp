@@ -246,6 +246,13 @@ std::string slope_list(const std::vector<SlopeAtDensity>& list) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
+// The slope's standard error by the jackknife over seeds, as the rows name it; none with one seed.
+std::string jackknife_note(double error_over_seeds) {
+  return error_over_seeds > 0
+             ? fmt::format("slope SE by the jackknife over seeds {:.4f}", error_over_seeds)
+             : std::string("no jackknife over seeds (one seed per point)");
+}
+
 }  // namespace
 
 Claim claim_randomized_A_flat(const ReproduceResults& R) {
@@ -262,8 +269,8 @@ Claim claim_randomized_A_flat(const ReproduceResults& R) {
                       mode, s.density),
           Measurement{s.theory, 0.0}, s.simulated, std::nullopt,
           agreement(s.simulated, Measurement{s.theory, 0.0}), "reproduced", "not reproduced",
-          fmt::format("linear fit, chi2/dof = {:.2f}; slope SE by the jackknife over seeds {:.4f}",
-                      s.chi2_per_dof, s.error_over_seeds)));
+          fmt::format("linear fit, chi2/dof = {:.2f}; {}", s.chi2_per_dof,
+                      jackknife_note(s.error_over_seeds))));
   std::vector<ComparisonRow> paper_rows;
   for (const auto& r : c.rows)
     if (r.quantity.find("[paper,") != std::string::npos) paper_rows.push_back(r);
@@ -283,8 +290,8 @@ Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
                     s.density),
         Measurement{0.0, 0.0}, s.simulated, std::nullopt, flat, "not reproduced", "reproduced",
         fmt::format("'theory' column: a flat A; kinetic theory's slope (b = 0) is {:.4f}; linear "
-                    "fit, chi2/dof = {:.2f}; slope SE by the jackknife over seeds {:.4f}",
-                    s.theory, s.chi2_per_dof, s.error_over_seeds)));
+                    "fit, chi2/dof = {:.2f}; {}",
+                    s.theory, s.chi2_per_dof, jackknife_note(s.error_over_seeds))));
     c.rows.back().rule = "reproduced if the slope differs from 0 by more than 3 SE";
   }
   c.verdict = verdict_of_all(c.rows, "reproduced", "not reproduced");
