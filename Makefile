@@ -29,7 +29,7 @@ packages:
 
 deps:
 	@missing=""; for p in $(PACKAGES); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed$$" || missing="$$missing $$p"; \
 	done; \
 	if [ -z "$$missing" ]; then echo "[deps] all $(words $(PACKAGES)) Debian packages present"; exit 0; fi; \
 	echo "[deps] missing Debian packages:$$missing"; \

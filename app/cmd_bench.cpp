@@ -91,8 +91,9 @@ void bench_theory(const BenchOptions& o) {
       "evaluations\n";
   std::cout << fmt::format("{:>4} {:>9} {:>16} {:>11} {:>14} {:>14} {:>12}\n", "d", "method",
                            "setting", "cpu [s]", "error reached", "error estim.", "evaluations");
+  std::vector<validation::WorkPrecisionData> figures_data;  // drawn once the table is written
   for (int d : {2, 3}) {
-    validation::WorkPrecisionData data;
+    validation::WorkPrecisionData& data = figures_data.emplace_back();
     data.title = fmt::format("mu2 coefficient table, d = {} (adaptive QAGIU)", d);
     std::vector<TheoryRow> rows;
     // The reference: nested adaptive QAGIU at requested tolerances.
@@ -118,14 +119,17 @@ void bench_theory(const BenchOptions& o) {
       csv += fmt::format("{},{},{},{:.4e},{:.3e},{:.3e},{}\n", d, r.method, r.setting, r.seconds,
                          r.error.reached, r.error.estimated, r.evaluations);
     }
-#ifdef MOLCHAOS_HAVE_FIGURES
-    figures::RenderOptions ro;
-    ro.output_directory = o.out;
-    figures::render_work_precision(data, ro, fmt::format("work_precision_theory_d{}", d));
-#endif
   }
+  // The table first: a figure that cannot be drawn (no gnuplot, a full disk) keeps the measurement.
   validation::write_file_atomically(
       (std::filesystem::path(o.out) / "work_precision_theory.csv").string(), csv);
+#ifdef MOLCHAOS_HAVE_FIGURES
+  figures::RenderOptions ro;
+  ro.output_directory = o.out;
+  for (std::size_t k = 0; k < figures_data.size(); ++k)
+    figures::render_work_precision(figures_data[k], ro,
+                                   fmt::format("work_precision_theory_d{}", k + 2));
+#endif
 }
 
 // Seeds for system size n: the same work (particle-runs) for every N, at least k_min_seeds.
@@ -261,13 +265,14 @@ void bench_simulation(const BenchOptions& o) {
     std::cout << line << '\n';
     csv += "# " + line + '\n';
   }
+  // The table first: a figure that cannot be drawn (no gnuplot, a full disk) keeps the measurement.
+  validation::write_file_atomically(
+      (std::filesystem::path(o.out) / "work_precision_simulation.csv").string(), csv);
 #ifdef MOLCHAOS_HAVE_FIGURES
   figures::RenderOptions ro;
   ro.output_directory = o.out;
   figures::render_simulation_cost(data, ro);
 #endif
-  validation::write_file_atomically(
-      (std::filesystem::path(o.out) / "work_precision_simulation.csv").string(), csv);
 }
 
 void run_bench(const BenchOptions& o) {

@@ -72,15 +72,26 @@ void run_sweep_command(SweepCliOptions& o) {
     if (o.spec.max_seeds < o.spec.seeds)
       throw UsageError("--max-seeds",
                        fmt::format("value {} is below --seeds {}", o.spec.max_seeds, o.spec.seeds));
+    // The seeds a point needs follow from its scatter, which one run per point does not give.
+    if (o.spec.seeds < 2)
+      throw UsageError("--seeds",
+                       "value 1 with --target-error: the first stage needs 2 runs or "
+                       "more per point to measure their scatter");
   }
   require_distinct_files({{"--cache", o.cache}, {"--out", o.out}});
-  if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
-  if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   try {
     validation::validate(o.spec);
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("sweep", e.what());
   }
+  // Only a sweep that will run creates folders: its cache, and the folder of its summary, in which
+  // a file is written at once (permissions do not show /proc to root).
+  if (!o.out.empty()) {
+    require_writable_file("--out", o.out, /*create_parent=*/true);
+    const std::filesystem::path parent = std::filesystem::path(o.out).parent_path();
+    if (!parent.empty()) require_usable_directory("--out", parent.string());
+  }
+  if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   validation::SweepOptions so;
   so.cache_directory = o.cache;
   so.threads = o.threads;
