@@ -38,8 +38,17 @@ deps:
 	export DEBIAN_FRONTEND=noninteractive; \
 	apt-get update -q && apt-get install -y -q --no-install-recommends $$missing
 
-$(BUILD)/CMakeCache.txt: | deps
+# The CMAKE_ARGS of the last configure, rewritten when they differ, so that other ones (make
+# CMAKE_ARGS=...) configure again, where an existing build would keep its settings without a word.
+ifneq ($(file <$(BUILD)/cmake-args),$(strip $(CMAKE_ARGS)))
+$(shell mkdir -p $(BUILD) && echo '$(strip $(CMAKE_ARGS))' > $(BUILD)/cmake-args)
+endif
+$(BUILD)/cmake-args:
+	@mkdir -p $(BUILD); echo '$(strip $(CMAKE_ARGS))' > $@
+
+$(BUILD)/CMakeCache.txt: $(BUILD)/cmake-args | deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+	@touch $@  # cmake leaves an unchanged cache's time as it was
 
 configure: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
