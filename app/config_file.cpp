@@ -254,11 +254,14 @@ ConfigFile read_config_file(const std::string& path) {
   constexpr std::size_t k_read_limit = std::size_t{16} << 20;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError("--config", "cannot read '" + path + "'");
-  std::string text(k_read_limit, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(k_read_limit));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() < k_read_limit && in) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw UsageError("--config", "cannot read '" + path + "'");
-  const bool cut = text.size() == k_read_limit && in.peek() != std::char_traits<char>::eof();
+  const bool cut = text.size() >= k_read_limit && in.peek() != std::char_traits<char>::eof();
   static constexpr std::string_view k_hdf5 = "\x89HDF\r\n\x1a\n";
   if (text.starts_with(k_hdf5)) {
 #ifdef MOLCHAOS_HAVE_IO
