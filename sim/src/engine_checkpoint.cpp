@@ -81,11 +81,12 @@ void Engine<D, Observer>::check_restored(const CheckpointReader& in) const {
     in.fail("clock's time unit theta not a finite number > 0, or its offset not finite");
   if (collisions_ > events_) in.fail("more collisions than events");
   // All zero, the shuffle drew particle 0 for ever: a run with the paper's shuffle never ended.
+  if (!shuffle_rng_.well_formed())
+    in.fail("shuffle's random generator in the all-zero state or with a spare that is not finite");
+  // Sums that are not finite went into the samples' contact statistics, and on into the output.
   if constexpr (requires(const Observer& o) { o.well_formed(); })
     if (!observer_.well_formed())
       in.fail("collision observer's sums not finite or not matching its count of collisions");
-  if (!shuffle_rng_.well_formed())
-    in.fail("shuffle's random generator in the all-zero state or with a spare that is not finite");
   // A run is saved only while it goes on: not stopped, below the collapse and dead-lock counts.
   if (stop_ || micro_run_ >= k_collapse_collisions || stalled_events_ >= k_stall_events)
     in.fail("a run that has stopped, or counts at a collapse or dead-lock");

@@ -232,8 +232,9 @@ void Engine<D, Observer>::set_collision_limit(std::uint64_t limit) {
 template <int D, class Observer>
 void Engine<D, Observer>::resync() {
   for (std::int32_t i = 0; i < n_; ++i) advance_particle(i);
-  remove_momentum_drift<D>(particles(), sum_velocity_squared(), [](Particle& p) { return p.v; });
   sum_u2_ = sum_velocity_squared();
+  if (remove_momentum_drift<D>(particles(), sum_u2_, [](Particle& p) { return p.v; }))
+    sum_u2_ = sum_velocity_squared();
   const double temperature = sum_u2_ / (static_cast<double>(n_) * D);
   double factor = 1.0;
   // Physical T = T_internal / theta^2: at the floor of double precision the run stops (no
