@@ -402,6 +402,38 @@ BOOST_AUTO_TEST_CASE(summary_of_one_run_has_no_error_bars) {
   BOOST_TEST(rows[1].ends_with(",1.01,nan"));
 }
 
+// Columns that do not apply to a point are nan, not 0: A, A_theory, mean_dyad, a2 and the
+// breakdown time at eps = 1, collision_ratio at eps < 1, the breakdown time without a breakdown.
+BOOST_AUTO_TEST_CASE(summary_columns_that_do_not_apply_are_nan) {
+  EnsembleSpec spec;
+  spec.restitutions = {0.9, 1.0};
+  spec.seeds = 3;
+  std::vector<PointResult> points(2);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i].summary.density = 0.05;
+    points[i].summary.restitution = spec.restitutions[i];
+    points[i].summary.mode = "none";
+    points[i].summary.runs = 3;
+  }
+  points[0].summary.A = {20.5, 0.1};
+  points[0].A_theory = {21.3, 2.5e-14};
+  points[0].summary.mean_dyad = {-0.5, 0.02};
+  points[0].summary.a2 = {0.01, 0.003};
+  points[1].collision_ratio = {1.01, 0.02};
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("molchaos_summary_na_" + std::to_string(::getpid()) + ".csv");
+  write_summary_csv(spec, points, "test", path.string());
+  std::ifstream in(path);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with("0.05,")) rows.push_back(line);
+  std::filesystem::remove(path);
+  BOOST_TEST_REQUIRE(rows.size() == 2u);
+  BOOST_TEST(rows[0] == "0.05,0.9,edmd,none,20.5,0.1,3,0,21.3,2.5e-14,-0.5,0.02,0.01,0.003,0,nan,"
+                        "nan,nan,nan");
+  BOOST_TEST(rows[1] == "0.05,1,edmd,none,nan,nan,3,0,nan,nan,nan,nan,nan,nan,0,nan,nan,1.01,0.02");
+}
+
 // The report page embeds an animation as a GIF data URI and a still figure as a PNG one.
 BOOST_AUTO_TEST_CASE(report_html_embeds_gif_and_png_by_type) {
   namespace fs = std::filesystem;

@@ -20,6 +20,9 @@
 #include "molchaos/theory/dimension.hpp"
 
 namespace molchaos::validation {
+namespace {
+constexpr double k_not_applicable = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 void validate(const EnsembleSpec& s) {
   if (s.densities.empty()) throw std::invalid_argument("densities: at least one is required");
@@ -233,6 +236,9 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << "# A, a2, mean_dyad (and collision_ratio at eps = 1) are nan at a point where no run "
            "succeeded (runs = 0, failed = their number); their errors are nan where fewer than 2 "
            "runs succeeded (no standard error)\n";
+    out << "# nan also where a column does not apply: A, A_theory, mean_dyad, a2 and the "
+           "breakdown time at eps = 1 (no cooling), collision_ratio at eps < 1, the breakdown "
+           "time where no run broke down\n";
     for (const auto& note : extrapolated_theory_notes(s)) out << "# note: " << note << "\n";
     out << "density,restitution,method,randomize,A,A_err,runs,failed,A_theory,A_theory_err,"
            "mean_dyad,mean_dyad_err,a2,a2_err,breakdowns,breakdown_time,breakdown_time_err,"
@@ -240,14 +246,21 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     for (const auto& p : points) {
       const auto& m = p.summary;
       const auto error = [&m](double e) { return error_of_runs(e, m.runs); };
+      // A column that does not apply to the point holds nan, not the 0 of an unset value, which
+      // would read as a measurement.
+      const bool cooling = m.restitution < 1.0;
+      const auto when = [](bool applies, double v) { return applies ? v : k_not_applicable; };
+      const bool broke_down = cooling && m.breakdowns > 0;
       out << fmt::format(
           "{},{},{},{},{:.10g},{:.4g},{},{},{:.10g},{:.3g},{:.8g},{:.3g},{:.6g},{:.3g},{},{:.6g},"
           "{:.3g},{:.8g},{:.3g}\n",
-          m.density, m.restitution, method_name(p.method), m.mode, m.A.value, error(m.A.error),
-          m.runs, m.failed, p.A_theory.value, p.A_theory.error, m.mean_dyad.value,
-          error(m.mean_dyad.error), m.a2.value, error(m.a2.error), m.breakdowns,
-          m.breakdown_time.value, m.breakdown_time.error, p.collision_ratio.value,
-          error(p.collision_ratio.error));
+          m.density, m.restitution, method_name(p.method), m.mode, when(cooling, m.A.value),
+          when(cooling, error(m.A.error)), m.runs, m.failed, when(cooling, p.A_theory.value),
+          when(cooling, p.A_theory.error), when(cooling, m.mean_dyad.value),
+          when(cooling, error(m.mean_dyad.error)), when(cooling, m.a2.value),
+          when(cooling, error(m.a2.error)), m.breakdowns, when(broke_down, m.breakdown_time.value),
+          when(broke_down, error_of_runs(m.breakdown_time.error, m.breakdowns)),
+          when(!cooling, p.collision_ratio.value), when(!cooling, error(p.collision_ratio.error)));
     }
   });
 }
