@@ -429,8 +429,9 @@ BOOST_AUTO_TEST_CASE(summary_columns_that_do_not_apply_are_nan) {
     if (line.starts_with("0.05,")) rows.push_back(line);
   std::filesystem::remove(path);
   BOOST_TEST_REQUIRE(rows.size() == 2u);
-  BOOST_TEST(rows[0] == "0.05,0.9,edmd,none,20.5,0.1,3,0,21.3,2.5e-14,-0.5,0.02,0.01,0.003,0,nan,"
-                        "nan,nan,nan");
+  BOOST_TEST(rows[0] ==
+             "0.05,0.9,edmd,none,20.5,0.1,3,0,21.3,2.5e-14,-0.5,0.02,0.01,0.003,0,nan,"
+             "nan,nan,nan");
   BOOST_TEST(rows[1] == "0.05,1,edmd,none,nan,nan,3,0,nan,nan,nan,nan,nan,nan,0,nan,nan,1.01,0.02");
 }
 
