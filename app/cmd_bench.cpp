@@ -42,7 +42,7 @@ struct BenchOptions {
   std::vector<long long> particles{1000, 3000, 10000, 30000, 100000};
   long long work = 400000;  // particle-runs per N
   int threads = 0;
-  std::string simulation_flag_given;  // --particles or --work, which apply to --simulation only
+  std::string simulation_flag_given;  // --particles, --work or --threads: for --simulation only
 };
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -302,13 +302,15 @@ void add_bench_command(CLI::App& app) {
       cmd->add_option("--work", o->work, "particle-runs per N (seeds = max(4, work / N))")
           ->transform(integer_in(1000, 1000000000))
           ->capture_default_str();
-  cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->transform(integer_in(0, 1024))
-      ->capture_default_str();
+  CLI::Option* threads =
+      cmd->add_option("--threads", o->threads, "worker threads of --simulation (0: all cores)")
+          ->transform(integer_in(0, 1024))
+          ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
-  set_callback_with_config(cmd, [o, particles, work] {
+  set_callback_with_config(cmd, [o, particles, work, threads] {
     if (particles->count() > 0) o->simulation_flag_given = "--particles";
     if (work->count() > 0) o->simulation_flag_given = "--work";
+    if (threads->count() > 0) o->simulation_flag_given = "--threads";
     run_bench(*o);
   });
 }

@@ -253,14 +253,17 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--quick", o->quick, "a first look in seconds (N = 1000, 3 restitutions, 3 seeds)");
   cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
       ->transform(integer_in(1, 10000));
-  cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->transform(integer_in(0, 1024));
+  CLI::Option* threads = cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
+                             ->transform(integer_in(0, 1024));
   cmd->add_flag("!--no-figures", o->figures, "skip rendering");
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr (notes and errors still)");
   cmd->add_flag("--relax-each-run", o->relax_each_run,
                 "relax every run itself instead of restoring the relaxed state of an earlier run "
                 "with the same N, density and seed (the same results, more CPU)");
-  set_callback_with_config(cmd, [o] { run_reproduce(*o); });
+  set_callback_with_config(cmd, [o, threads] {
+    reject_threads_on_ranks(threads->count() > 0);
+    run_reproduce(*o);
+  });
 }
 
 }  // namespace molchaos::app

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -32,7 +33,29 @@ struct SweepCliOptions {
   bool quiet = false;
   bool relax_given = false;  // --relax on the command line or in the --config file
   bool max_seeds_given = false;
+  bool t_end_tau0_given = false, t_end_elastic_given = false, target_error_given = false;
+  bool threads_given = false;
 };
+
+// Options that apply only to cooling (restitution < 1) or only to elastic (restitution 1) points
+// are refused when no listed point is of that kind: they would be dropped without a word.
+void reject_options_without_their_points(const SweepCliOptions& o) {
+  const auto& eps = o.spec.restitutions;
+  const bool cooling = std::any_of(eps.begin(), eps.end(), [](double e) { return e < 1.0; });
+  const bool elastic = std::any_of(eps.begin(), eps.end(), [](double e) { return e >= 1.0; });
+  if (o.t_end_tau0_given && !cooling)
+    throw UsageError("--t-end-tau0",
+                     "sets the length of cooling runs (--restitution below 1), "
+                     "and none is listed; use --t-end-elastic");
+  if (o.target_error_given && !cooling)
+    throw UsageError("--target-error",
+                     "bounds SE(A)/A, which only cooling runs (--restitution "
+                     "below 1) measure, and none is listed");
+  if (o.t_end_elastic_given && !elastic)
+    throw UsageError("--t-end-elastic",
+                     "sets the length of elastic runs (--restitution 1), and "
+                     "none is listed; use --t-end-tau0");
+}
 
 // Why runs of a point gave no value, one line per reason: many seeds that share a reason say it
 // once.
@@ -56,6 +79,8 @@ void run_sweep_command(SweepCliOptions& o) {
   reject_repeated_values("--restitution", o.spec.restitutions, remedy);
   reject_repeated_values("--randomize", o.modes, remedy);
   reject_repeated_values("--method", o.methods, remedy);
+  reject_options_without_their_points(o);
+  reject_threads_on_ranks(o.threads_given);
   for (double n : o.spec.densities)
     if (n >= sim::close_packing_density(o.spec.dimension))
       throw UsageError("--density",
@@ -175,10 +200,11 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--seeds", o->spec.seeds, "independent runs per point")
       ->transform(integer_in(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--target-error", o->spec.target_relative_error,
-                  "more seeds, in stages, until SE(A)/A is at most this at every point "
-                  "(relative; needs --cache)")
-      ->transform(real_in(0.0, false, 1.0, false));
+  CLI::Option* target_error =
+      cmd->add_option("--target-error", o->spec.target_relative_error,
+                      "more seeds, in stages, until SE(A)/A is at most this at every point "
+                      "(relative; needs --cache)")
+          ->transform(real_in(0.0, false, 1.0, false));
   CLI::Option* max_seeds = cmd->add_option("--max-seeds", o->spec.max_seeds,
                                            "at most this many seeds per point "
                                            "with --target-error")
@@ -187,26 +213,34 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--base-seed", o->spec.base_seed, "base seed; run i uses a hash of (base, i)")
       ->transform(unsigned_integer())
       ->capture_default_str();
-  cmd->add_option("--t-end-tau0", o->spec.t_end_in_tau0, "run length in kinetic-theory tau0")
-      ->transform(real_in(0.0, false, 1e6, true))
-      ->capture_default_str();
-  cmd->add_option("--t-end-elastic", o->spec.t_end_elastic, "run length at restitution 1")
-      ->transform(real_in(0.0, false, 1e9, true))
-      ->capture_default_str();
+  CLI::Option* t_end_tau0 =
+      cmd->add_option("--t-end-tau0", o->spec.t_end_in_tau0,
+                      "run length in kinetic-theory tau0 (restitution below 1)")
+          ->transform(real_in(0.0, false, 1e6, true))
+          ->capture_default_str();
+  CLI::Option* t_end_elastic =
+      cmd->add_option("--t-end-elastic", o->spec.t_end_elastic, "run length at restitution 1")
+          ->transform(real_in(0.0, false, 1e9, true))
+          ->capture_default_str();
   add_parameter_option(cmd, "samples_per_decade", o->spec.samples_per_decade);
   CLI::Option* relax = add_parameter_option(cmd, "relax_collisions_per_particle",
                                             o->spec.relax_collisions_per_particle);
   cmd->add_option("--cache", o->cache, "cache directory ('' for none)")->capture_default_str();
-  cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
-      ->transform(integer_in(0, 1024))
-      ->capture_default_str();
+  CLI::Option* threads = cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
+                             ->transform(integer_in(0, 1024))
+                             ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV")->check(path_name());
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
-  set_callback_with_config(cmd, [o, relax, max_seeds] {
-    o->relax_given = relax->count() > 0;
-    o->max_seeds_given = max_seeds->count() > 0;
-    run_sweep_command(*o);
-  });
+  set_callback_with_config(cmd,
+                           [o, relax, max_seeds, target_error, t_end_tau0, t_end_elastic, threads] {
+                             o->relax_given = relax->count() > 0;
+                             o->max_seeds_given = max_seeds->count() > 0;
+                             o->target_error_given = target_error->count() > 0;
+                             o->t_end_tau0_given = t_end_tau0->count() > 0;
+                             o->t_end_elastic_given = t_end_elastic->count() > 0;
+                             o->threads_given = threads->count() > 0;
+                             run_sweep_command(*o);
+                           });
 }
 
 }  // namespace molchaos::app

@@ -87,6 +87,13 @@ TOML
 "$bin" sweep --config sweep.csv --cache cache --out again.csv --threads 1 >/dev/null 2>&1 ||
   fail "sweep from its summary"
 cmp sweep.csv again.csv || fail "the sweep repeated from its summary's header differs"
+# An elastic sweep's header holds no cooling run length (which such a sweep refuses as given).
+"$bin" sweep --particles 300 --seeds 2 --restitution 1 --t-end-elastic 5 --cache cache \
+  --out elastic.csv --threads 1 >/dev/null 2>&1 || fail "elastic sweep"
+grep -q '^# t_end_in_tau0' elastic.csv && fail "an elastic sweep's header names a cooling run length"
+"$bin" sweep --config elastic.csv --cache cache --out elastic2.csv --threads 1 >/dev/null 2>&1 ||
+  fail "elastic sweep from its summary"
+cmp elastic.csv elastic2.csv || fail "the elastic sweep repeated from its summary's header differs"
 printf 'restitution = 0.8\ndensity = 0.1\njson = true\n' >theory.toml
 "$bin" theory --config theory.toml | grep -q '"restitution": 0.8' || fail "theory from a file"
 printf 'simulation = true\nparticles = [100]\nwork = 1000\nthreads = 1\nout = "bench"\n' >bench.toml

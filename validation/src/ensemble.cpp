@@ -214,8 +214,14 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
     out << "# version = " << version << "\n";
     out << fmt::format("# dimension = {}\n# particles = {}\n# seeds = {}\n# base_seed = {}\n",
                        s.dimension, s.particles, s.seeds, s.base_seed);
-    out << fmt::format("# t_end_in_tau0 = {}\n# t_end_elastic = {}\n# samples_per_decade = {}\n",
-                       s.t_end_in_tau0, s.t_end_elastic, s.samples_per_decade);
+    // Each run length only where a listed point uses it: `sweep --config summary.csv` refuses a
+    // length without its points.
+    const auto& eps = s.restitutions;
+    if (std::any_of(eps.begin(), eps.end(), [](double e) { return e < 1.0; }))
+      out << fmt::format("# t_end_in_tau0 = {}\n", s.t_end_in_tau0);
+    if (std::any_of(eps.begin(), eps.end(), [](double e) { return e >= 1.0; }))
+      out << fmt::format("# t_end_elastic = {}\n", s.t_end_elastic);
+    out << fmt::format("# samples_per_decade = {}\n", s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
     if (s.target_relative_error > 0.0)  // `seeds` was the first stage; the runs column says more
       out << fmt::format("# target_error = {}\n# max_seeds = {}\n", s.target_relative_error,
