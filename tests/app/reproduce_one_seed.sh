@@ -27,6 +27,18 @@ done
 grep -Eq '^\| paper 5 \| .* \| \*\*not decided\*\* \| one seed per point gives no standard errors' $report ||
   fail "the Haff claim of the randomized gas is not 'not decided': $(grep '^| paper 5 ' $report)"
 grep -Eq '^\| suite 11 \| .* \| \*\*not decided\*\* \|' $report || fail "the elastic limit is decided on one run"
+# The Fig. 4 slopes: with one seed their error is the scatter of three points about a line (one
+# degree of freedom), not a standard error of A.
+for claim in 'paper 6' 'paper 7'; do
+  grep -Eq "^\| $claim \| .* \| \*\*not decided\*\* \|" $report ||
+    fail "a Fig. 4 slope claim is decided on one seed: $(grep "^| $claim " $report | cut -c1-200)"
+done
+# What one seed cannot measure is said to be not measured, not printed as 0.
+for zero in 'cost ×0.00' 'r = +0.000 ± 0.000'; do
+  ! grep -qF "$zero" $report || fail "the report prints an unmeasured value as 0: $zero"
+done
+grep -q '^none,integrated,nan,0,nan,nan,nan,true$' one/haff_estimators.csv ||
+  fail "the estimator table holds numbers without a second run: $(grep '^none,integrated' one/haff_estimators.csv)"
 grep -Eq '^\| paper 1 \| .* \| \*\*reproduced\*\* \|' $report || fail "the theory claim lost its verdict"
 grep -q '| not decided |' $report || fail "no comparison row says 'not decided'"
 ! grep -q 'jackknife over seeds 0\.0000' $report || fail "a jackknife over one seed is reported as 0"

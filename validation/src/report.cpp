@@ -57,13 +57,6 @@ std::vector<std::pair<const PointResult*, std::string>> fig4_rows(const Reproduc
   return rows;
 }
 
-// "value ± error" to `decimals` decimals; the value alone where the error is unknown: nan from
-// error_of_runs, or 0 (a mean over fewer than two runs holds 0; its error is not zero but unknown).
-std::string with_error(double value, double error, int decimals) {
-  if (!(error > 0.0) || !std::isfinite(error)) return fmt::format("{:.{}f}", value, decimals);
-  return fmt::format("{:.{}f} ± {:.{}f}", value, decimals, error, decimals);
-}
-
 std::string fmt_measurement(const std::optional<Measurement>& m) {
   if (!m) return "–";
   if (m->error == 0.0) return fmt::format("{:.6g}", m->value);
@@ -90,6 +83,11 @@ std::string undecided_reason(std::size_t rows_without_error, std::size_t rows, i
 }
 
 }  // namespace
+
+std::string with_error(double value, double error, int decimals) {
+  if (!(error > 0.0) || !std::isfinite(error)) return fmt::format("{:.{}f}", value, decimals);
+  return fmt::format("{:.{}f} ± {:.{}f}", value, decimals, error, decimals);
+}
 
 void withhold_undecidable_verdicts(std::vector<Claim>& claims, int seeds) {
   for (auto& claim : claims) {

@@ -9,6 +9,7 @@
 #include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/theory/sonine.hpp"
 #include "molchaos/validation/proportional_fit.hpp"
+#include "molchaos/validation/report.hpp"
 #include "molchaos/validation/verdict.hpp"
 #include "reproduce_steps.hpp"
 
@@ -229,8 +230,12 @@ std::vector<SlopeAtDensity> slopes(const ReproduceResults& R, const std::string&
         x.push_back(e);
         y.push_back(find_point(R, panel.density, e, mode).A_theory);
       }
+      // With one seed per point A has no standard error, and the fit's slope error comes from
+      // the scatter of the few points about the line alone (one degree of freedom for three
+      // ε): no error to decide by (withhold_undecidable_verdicts then withholds the verdict).
+      const bool over_seeds = s.slope_error_over_seeds > 0.0;
       out.push_back({panel.density,
-                     {s.fit->slope, s.fit->slope_error},
+                     {s.fit->slope, over_seeds ? s.fit->slope_error : 0.0},
                      fit_line(x, y).slope,
                      s.fit->chi2_per_dof,
                      s.slope_error_over_seeds});
@@ -241,8 +246,9 @@ std::vector<SlopeAtDensity> slopes(const ReproduceResults& R, const std::string&
 std::string slope_list(const std::vector<SlopeAtDensity>& list) {
   std::vector<std::string> parts;
   for (const auto& s : list)
-    parts.push_back(fmt::format("{:.2f} ± {:.2f} (n = {}; theory {:.2f})", s.simulated.value,
-                                s.simulated.error, s.density, s.theory));
+    parts.push_back(fmt::format("{} (n = {}; theory {:.2f})",
+                                with_error(s.simulated.value, s.simulated.error, 2), s.density,
+                                s.theory));
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 

@@ -27,6 +27,10 @@ std::string a2_csv(const ReproduceResults& results);
 /// at; empty for a figure the report does not know.
 std::string figure_caption(const std::string& file, const ReproduceResults& results);
 
+/// "value ± error" to `decimals` decimals; the value alone where the error is unknown (nan, or 0:
+/// a mean over fewer than two runs holds 0, whose error is not zero but unknown).
+std::string with_error(double value, double error, int decimals);
+
 /// A claim can be decided only on simulated values that carry a standard error. Where one of its
 /// comparison rows compares a simulated value without one (a mean over fewer than two runs, which
 /// holds the error 0: one seed per point) with theory, another gas or the paper, the claim's
