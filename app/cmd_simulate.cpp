@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -21,6 +22,7 @@
 #include "commands.hpp"
 #include "config_file.hpp"
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/sim.hpp"
 #include "molchaos/validation/run_pair_correlations.hpp"
 #ifdef MOLCHAOS_HAVE_IO
@@ -97,15 +99,51 @@ std::string snapshot_path(const std::string& out, std::size_t index) {
   return (p.parent_path() / (stem + ".snapshot" + std::to_string(index) + ".csv")).string();
 }
 
+// The run parameters a result file's header holds ("# key = value" lines of parameters, and the
+// version line), as written; empty when the file cannot be read or names none.
+std::vector<std::string> parameter_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line) && line.starts_with("# ");) {
+    const auto equals = line.find(" = ");
+    if (equals == std::string::npos) continue;
+    const std::string key = line.substr(2, equals - 2);
+    if (key == "version" || sim::find_parameter(key) != nullptr) lines.push_back(line);
+  }
+  return lines;
+}
+
+// The snapshot files of the run whose CSV this run replaced (`replaced`: its parameter lines,
+// empty if there was none), numbered from `from` on: the run that wrote them is gone, and they
+// would pass for this run's. Only files written by that run (the same parameter lines) are
+// removed, and none of this run's own outputs: another run's files (an --out differing only in
+// its extension names the same snapshots) and the files this run wrote stay.
+void remove_earlier_snapshots(const SimulateOptions& o, std::size_t from,
+                              const std::vector<std::string>& replaced) {
+  if (replaced.empty()) return;
+  const auto own = [&o](const std::string& path) {
+    std::error_code ec;
+    for (const std::string& f : {o.out, o.write_config, o.pair_correlations, o.trajectory, o.xyz,
+                                 o.checkpoints.path, o.checkpoints.restart})
+      if (!f.empty() && std::filesystem::equivalent(path, f, ec)) return true;
+    return false;
+  };
+  std::error_code ignored;
+  for (std::size_t k = from;; ++k) {
+    const std::string path = snapshot_path(o.out, k);
+    if (own(path) || parameter_lines(path) != replaced) return;
+    std::filesystem::remove(path, ignored);
+  }
+}
+
 // Every output of the run, written as one (sim::StagedFiles): all files or none, and a full disk
 // leaves the files of a run before in place. Written with the results, so that a run refused on
 // the way (a checkpoint of other parameters) or interrupted leaves no file. SIGINT and SIGTERM
 // wait until the files are in place (a signal's default end would leave temporaries behind);
 // temporaries of a writer killed outright are removed by the next run (their age rule in
 // sim::remove_stale_temporaries).
-// Snapshot files beyond the run's own (of times it did not reach, or an earlier run's with more
-// snapshots) are removed: a run's snapshot names are its own, and an older run's would pass for
-// its.
+// Snapshot files beyond the run's own that the run it replaces wrote (of times this one did not
+// reach, or more snapshot times) are removed (remove_earlier_snapshots).
 void write_outputs(const SimulateOptions& options, const sim::RunResult& result) {
   const sim::Parameters& p = options.parameters;
   sigset_t signals, before;
@@ -118,7 +156,7 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
     ~Unblock() { pthread_sigmask(SIG_SETMASK, mask, nullptr); }
   } unblock{&before};
   for (const std::string& path : {options.out, options.write_config, options.pair_correlations,
-                                  options.trajectory, options.xyz})
+                                  options.trajectory, options.xyz, options.checkpoints.path})
     if (!path.empty()) {
       const std::string directory = std::filesystem::path(path).parent_path().string();
       sim::remove_stale_temporaries(directory.empty() ? "." : directory);
@@ -137,12 +175,9 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
   if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory, files);
   if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz, files);
 #endif
+  const std::vector<std::string> replaced = parameter_lines(options.out);  // before the commit
   files.commit();
-  // An earlier run's snapshots beyond this run's (a run writes them numbered from 0 on).
-  std::error_code ignored;
-  for (std::size_t k = result.snapshots.size();
-       std::filesystem::remove(snapshot_path(options.out, k), ignored); ++k) {
-  }
+  remove_earlier_snapshots(options, result.snapshots.size(), replaced);
 }
 
 void run_simulate(const SimulateOptions& options) {
@@ -177,7 +212,8 @@ void run_simulate(const SimulateOptions& options) {
     require_distinct_files(files);
   }
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
-    throw UsageError("--checkpoint-interval", "needs --checkpoint FILE");
+    throw UsageError(checkpoints.interval > 0 ? "--checkpoint-interval" : "--checkpoint-wall",
+                     "needs --checkpoint FILE");
   if (!checkpoints.restart.empty() && !std::filesystem::is_regular_file(checkpoints.restart))
     throw UsageError("--restart", "no checkpoint file '" + checkpoints.restart + "'");
   try {
@@ -239,6 +275,12 @@ void run_simulate(const SimulateOptions& options) {
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
                sim::stop_message(result).c_str(), options.out.c_str());
+  // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
+  // for: the files say so in their rows (none in an empty --xyz file, a --pair-correlations
+  // table without rows), and this line at once.
+  if (result.snapshots.size() < p.snapshot_times.size())
+    std::fprintf(stderr, "note: %zu of the %zu snapshot times reached before the run stopped\n",
+                 result.snapshots.size(), p.snapshot_times.size());
   if (result.stop_reason == sim::StopReason::collapse)
     throw std::runtime_error("run stopped early: " + sim::stop_message(result) +
                              " (partial results in " + options.out + ")");

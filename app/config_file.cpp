@@ -279,6 +279,10 @@ ConfigFile read_config_file(const std::string& path) {
   }
   // A UTF-8 byte order mark (as some Windows editors save) is no part of the first key.
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  // An empty file sets nothing: the defaults would run in place of the run the file was meant
+  // to repeat (an extended XYZ file of a run that reached none of its snapshot times is empty).
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
   switch (kind_of(text)) {
     case Kind::xyz:

@@ -142,7 +142,11 @@ void remove_stale_temporaries(const std::string& directory, double min_age_secon
     if (dot1 == std::string::npos || rest.size() - dot2 - 1 != 16) continue;
     const std::string writer_host = rest.substr(0, dot1);
     const std::string pid_text = rest.substr(dot1 + 1, dot2 - dot1 - 1);
-    if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos) continue;
+    // A process id has at most 7 digits (Linux's pid_max is at most 2^22): a longer one is not
+    // ours (and would not fit the int that kill() takes).
+    if (pid_text.empty() || pid_text.size() > 9 ||
+        pid_text.find_first_not_of("0123456789") != std::string::npos)
+      continue;
     if (rest.substr(dot2 + 1).find_first_not_of("0123456789abcdef") != std::string::npos) continue;
     const auto modified = fs::last_write_time(entry.path(), ec);
     if (ec) continue;

@@ -48,6 +48,16 @@ for f in thesis.tmp.tex run.csv.tmp.99999999 .x.csv.molchaos-tmp.otherhost.1.012
 done
 rm -f cache/thesis.tmp.tex cache/run.csv.tmp.99999999 cache/.x.csv.molchaos-tmp.*
 echo "ok: the cleaner leaves other files alone"
+# Temporaries of a killed writer are removed beside every output, the checkpoint's included; a
+# name whose process id no process can have is not a writer's (it stopped the run with "stoi").
+host=$(hostname | tr ./ __)
+mkdir -p ckdir outdir
+touch -d '2 days ago' "ckdir/.c.ckpt.molchaos-tmp.$host.4000000.0123456789abcdef" \
+  "outdir/.o.csv.molchaos-tmp.$host.99999999999.0123456789abcdef"
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out outdir/o.csv --checkpoint ckdir/c.ckpt \
+  --checkpoint-interval 1 2>cleaner.err || fail "simulate beside stale temporaries: $(cat cleaner.err)"
+[ -z "$(ls -A ckdir | grep molchaos-tmp || true)" ] || fail "a stale temporary beside the checkpoint stayed"
+echo "ok: the cleaner removes killed writers' temporaries beside every output"
 
 # 3. Unwritable outputs fail before the work, exit 2 naming the flag.
 expect2() {
@@ -89,6 +99,24 @@ grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && 
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5,10,25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, three snapshots"
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, no snapshots"
 [ -z "$(ls stop.snapshot* 2>/dev/null)" ] || fail "an earlier run's snapshots stayed beside a run without: $(ls stop*)"
+# Only the replaced run's snapshots go: not this run's other outputs named like snapshots, nor
+# the snapshots of a run whose --out differs only in its extension (the same snapshot names).
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 1 --quiet --out own.csv 2>/dev/null || fail "simulate own.csv"
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 1 --quiet --out own.csv \
+  --pair-correlations own.snapshot1.csv --write-config own.snapshot2.csv 2>/dev/null || fail "simulate own.csv again"
+[ -s own.snapshot1.csv ] && [ -s own.snapshot2.csv ] || fail "the run removed its own outputs named like snapshots: $(ls own*)"
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out own.csv --checkpoint own.snapshot1.csv \
+  --checkpoint-interval 1 2>/dev/null || fail "simulate own.csv with a checkpoint"
+[ -s own.snapshot1.csv ] || fail "the run removed its own checkpoint named like a snapshot"
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 0.5,1 --quiet --out ext.csv 2>/dev/null || fail "simulate ext.csv"
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out ext.txt 2>/dev/null || fail "simulate ext.txt"
+[ -f ext.snapshot0.csv ] && [ -f ext.snapshot1.csv ] || fail "a run of --out ext.txt removed the snapshots of ext.csv"
+# A run stopped before its first snapshot time keeps its outputs; the table has no rows, and says so.
+"$bin" simulate --particles 200 --t-end 50 --restitution 0.7 --relax 1 --max-collisions 10 --snapshot-times 40 \
+  --pair-correlations early_g.csv --xyz early.xyz --quiet --out early.csv 2>early.err || fail "a run stopped early failed: $(cat early.err)"
+[ -s early.csv ] && grep -q '^# no rows: the run stopped before its first snapshot time' early_g.csv ||
+  fail "a run stopped before its snapshots lost its outputs: $(ls early*)"
+grep -q '0 of the 1 snapshot times reached' early.err || fail "no note of the snapshots not reached: $(cat early.err)"
 echo "ok: snapshot paths"
 
 # 9. A signal while the outputs are written: it waits until they are all in place, and no

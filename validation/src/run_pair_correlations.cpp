@@ -22,14 +22,19 @@ double collisions_per_particle_at(const sim::RunResult& run, double t) {
 }
 
 void write_run_pair_correlations(const sim::RunResult& run, std::ostream& out) {
-  if (run.snapshots.empty())
+  if (run.parameters.snapshot_times.empty())
     throw std::invalid_argument(
-        "pair correlations: the run has no snapshots (give --snapshot-times)");
+        "pair correlations: the run has no snapshot times (give --snapshot-times)");
   const int d = run.parameters.dimension;
   out << "# molchaos simulate: pair correlation functions of the snapshots, c = v/sqrt(2T) at the "
          "snapshot's T; errors of one snapshot\n"
       << "# version = " << run.version << "\n";
   sim::write_parameter_lines(run.parameters, out);
+  // A run that stopped before its first snapshot time (a stop condition, a collapse) measured
+  // nothing: the table says so instead of the run losing its other outputs.
+  if (run.snapshots.empty())
+    out << "# no rows: the run stopped before its first snapshot time (" << sim::stop_message(run)
+        << ")\n";
   out << "t,tau,side,r_lo,r_hi,g,g_err,G_par,G_par_err,G_perp,G_perp_err,pairs\n";
   for (const auto& snap : run.snapshots) {
     const double tau = collisions_per_particle_at(run, snap.t);
