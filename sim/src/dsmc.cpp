@@ -141,7 +141,7 @@ void DsmcGas<D>::update_rate() {
 // The next candidate lies beyond target_ iff −ln(Π u)/Λ > target_ − clock_.
 template <int D>
 void DsmcGas<D>::set_threshold() {
-  threshold_ = std::max(std::exp(-(target_ - clock_) * rate_), k_underflow);
+  threshold_ = std::exp(-(target_ - clock_) * rate_);
 }
 
 namespace {
@@ -178,37 +178,51 @@ inline typename DsmcGas<D>::Pair DsmcGas<D>::draw_pair(Rng& rng) {
 
 // The candidate loop. The generator, the product of the waiting-time uniforms (the candidates
 // since the last flush waited −ln(Π u_k)/Λ in total) and the look-ahead position are locals, so
-// that they stay in registers; the clock is flushed at every exit.
+// that they stay in registers; the state is stored at every exit. The clock is flushed (one
+// logarithm) only where the run's own course asks for it (a raised bound, bookkeeping, a stop
+// condition, the product near underflow), never at a stop time: a run sampled at other times
+// flushes at the same candidates and computes the same numbers.
 template <int D>
 typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
   if (stop_reason_) return Status::stopped;
+  if (time_ >= t) return Status::reached;
   target_ = t;
-  if (clock_ >= t) return Status::reached;
   set_threshold();
   Rng rng = rng_;
-  double survival = 1.0;
+  double survival = survival_;
   std::uint64_t candidates = 0;
   unsigned ahead = next_ahead_;
   Status status = Status::reached;
+  bool resume = pending_;  // the candidate that passed the last stop time comes first
   for (;;) {
-    const Pair pair = ahead_[ahead];
-    ahead_[ahead] = draw_pair(rng);
-    ahead = (ahead + 1) % k_lookahead;
-    ++candidates;
-    // One 64-bit draw gives the candidate's two uniforms, 32 bits each: the waiting time's
-    // (k + 1/2)/2^32 in (0, 1) and the acceptance's k/2^32 in [0, 1). Their resolution 2^-32
-    // shifts an acceptance probability or the exponential's distribution function by at most
-    // 2.3e-10, far below anything a run can resolve, and saves a third of the generator calls.
-    const std::uint64_t uniforms = rng.next();
-    survival *= (static_cast<double>(uniforms >> 32) + 0.5) * 0x1.0p-32;
-    if (survival < threshold_) {
-      const double now = clock_ - std::log(survival) / rate_;
+    Pair pair;
+    std::uint64_t uniforms;
+    if (resume) {
+      resume = false;
+      pair = pending_pair_;
+      uniforms = pending_uniforms_;  // its waiting time is in the product already
+    } else {
+      pair = ahead_[ahead];
+      ahead_[ahead] = draw_pair(rng);
+      ahead = (ahead + 1) % k_lookahead;
+      ++candidates;
+      // One 64-bit draw gives the candidate's two uniforms, 32 bits each: the waiting time's
+      // (k + 1/2)/2^32 in (0, 1) and the acceptance's k/2^32 in [0, 1). Their resolution 2^-32
+      // shifts an acceptance probability or the exponential's distribution function by at most
+      // 2.3e-10, far below anything a run can resolve, and saves a third of the generator calls.
+      uniforms = rng.next();
+      survival *= (static_cast<double>(uniforms >> 32) + 0.5) * 0x1.0p-32;
+    }
+    pending_ = survival < threshold_;
+    if (pending_) {  // this candidate comes after t: it waits for the next advance_to
+      pending_pair_ = pair;
+      pending_uniforms_ = uniforms;
+      time_ = target_;
+      break;
+    }
+    if (survival < k_underflow) {  // the product nears underflow: flush it into the clock
+      clock_ -= std::log(survival) / rate_;
       survival = 1.0;
-      if (now >= target_) {  // this candidate comes after t: drop it (memoryless)
-        clock_ = target_;
-        break;
-      }
-      clock_ = now;  // only the underflow guard
       set_threshold();
     }
     double g[D], g2 = 0;
@@ -241,7 +255,9 @@ typename DsmcGas<D>::Status DsmcGas<D>::advance_to(double t) {
       set_threshold();
     }
   }
+  if (status == Status::stopped) time_ = clock_;
   rng_ = rng;
+  survival_ = survival;
   candidates_ += candidates;
   next_ahead_ = ahead;
   return status;
@@ -285,7 +301,7 @@ Sample DsmcGas<D>::sample() {
   }
   const double n = static_cast<double>(n_);
   Sample s;
-  s.t = clock_;
+  s.t = time_;
   s.temperature = m2 / (n * D) / (scale_ * scale_);
   s.a2 = m2 > 0 ? static_cast<double>(D) / (D + 2) * (m4 / n) / ((m2 / n) * (m2 / n)) - 1.0 : 0.0;
   s.collisions = collisions_;

@@ -81,6 +81,9 @@ void validate(const Parameters& p) {
   if (!std::isfinite(side))
     out_of_range("density", number(p.density),
                  "(0, " + number(n_max) + ") with a finite box side (N / n)^(1/d)");
+  // The limits below are the MD engine's (its cells, its initial configuration); DSMC keeps
+  // velocities only, and its density enters through the contact value g2 alone.
+  if (p.method == Method::dsmc) return;
   // The cell lists need at least 4 cells of width >= sigma per side: with 3, two particles in
   // neighbouring cells can be more than half a box apart and the minimum image flips while they
   // approach, so a collision is missed (found with two disks in a box of side 10).

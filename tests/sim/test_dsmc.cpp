@@ -543,3 +543,48 @@ BOOST_AUTO_TEST_CASE(paper_point_precision, *boost::unit_test::disabled()) {
                        << " (theory b = 0: " << dyad_theory.value << ", " << dyad_dev << " SE)");
   }
 }
+
+// The realisation does not depend on where the run is sampled: a run sampled on a finer grid,
+// or from a later first sample, passes through the same states at the times both sample
+// (a candidate whose time passes a sample time waits for the next advance instead of being
+// dropped, which gave another gas for every grid).
+BOOST_AUTO_TEST_CASE(sampling_times_do_not_change_the_gas) {
+  for (int d : {2, 3}) {
+    Parameters coarse = gas_parameters(d, 2000, 0.9, 7);
+    coarse.t_end = 300;
+    coarse.samples_per_decade = 10;
+    Parameters fine = coarse;
+    fine.samples_per_decade = 40;
+    Parameters shifted = coarse;
+    shifted.t_first_sample = 0.0123;
+    const RunResult a = run_dsmc(coarse), b = run_dsmc(fine), c = run_dsmc(shifted);
+    std::size_t common = 0;
+    for (const Sample& s : a.samples)
+      for (const Sample& r : b.samples)
+        if (r.t == s.t) {
+          ++common;
+          BOOST_TEST(r.temperature == s.temperature);
+          BOOST_TEST(r.collisions == s.collisions);
+        }
+    BOOST_TEST(common >= 20u);                 // every decade's coarse times, t_end among them
+    for (const RunResult* other : {&b, &c}) {  // at t_end
+      BOOST_TEST(other->samples.back().t == a.samples.back().t);
+      BOOST_TEST(other->samples.back().temperature == a.samples.back().temperature);
+      BOOST_TEST(other->collisions == a.collisions);
+    }
+  }
+}
+
+// The MD engine's limits (4 cells a side, the densest initial configuration for N) are not
+// DSMC's, which keeps velocities only: it is bounded by close packing alone.
+BOOST_AUTO_TEST_CASE(densities_beyond_the_md_start_are_dsmcs) {
+  Parameters p = gas_parameters(3, 512, 0.9, 1);
+  p.density = 1.0;  // beyond N = 512's simple cubic start (0.999999), below close packing
+  p.t_end = 1;
+  p.method = Method::edmd;
+  BOOST_CHECK_THROW(validate(p), std::invalid_argument);
+  p.method = Method::dsmc;
+  BOOST_CHECK_NO_THROW(validate(p));
+  p.density = 1.5;  // above close packing (sqrt 2)
+  BOOST_CHECK_THROW(validate(p), std::invalid_argument);
+}

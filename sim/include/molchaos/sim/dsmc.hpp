@@ -28,8 +28,10 @@ namespace molchaos::sim {
 /// classic no-time-counter scheme, which raises its bound only after a candidate exceeded it and
 /// so under-weights the fastest pairs). Waiting times between candidates are exponential with
 /// the current Λ: their sum is −ln Π u_k / Λ, so the hot loop multiplies uniforms and takes one
-/// logarithm only when Λ changes, the product nears underflow, or a stop time is crossed (the
-/// remaining wait is then discarded: by memorylessness a fresh one starts at the stop time).
+/// logarithm only when Λ changes or the product nears underflow. A stop time (a sample time)
+/// that a candidate's time passes leaves that candidate pending, its waiting time in the product,
+/// and the next advance_to() goes on with it: the realisation does not depend on where a run is
+/// sampled (--samples-per-decade, --t-first-sample), as the MD engine's does not.
 /// A candidate's waiting-time and acceptance uniforms have 32 bits each (one generator call):
 /// probabilities are then resolved to 2^-32, far below any statistical error a run reaches.
 ///
@@ -55,7 +57,7 @@ class DsmcGas {
   /// density_mode are NaN (there are no positions); events = collisions.
   Sample sample();
 
-  [[nodiscard]] double time() const { return clock_; }
+  [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] std::uint64_t collisions() const { return collisions_; }
   [[nodiscard]] std::optional<StopReason> stop_reason() const { return stop_reason_; }
   [[nodiscard]] double temperature() const;
@@ -102,8 +104,14 @@ class DsmcGas {
   double pair_bound2_ = 0.0;  // (2B)² ≥ |g|² of every pair
   double rate_ = 0.0;         // Λ in physical time
   double clock_ = 0.0;        // physical time at the last flush
-  double threshold_ = 0.0;    // Π u_k below this: the stop time is crossed (or underflow)
+  double time_ = 0.0;         // physical time of the state (a stop time reached, or a stop)
+  double threshold_ = 0.0;    // Π u_k below this: the stop time is crossed
   double target_ = 0.0;       // the stop time of the current advance_to
+  double survival_ = 1.0;     // Π u_k of the candidates since the last flush
+  // The candidate whose time passed the last stop time: tested first by the next advance_to.
+  bool pending_ = false;
+  Pair pending_pair_;
+  std::uint64_t pending_uniforms_ = 0;
   double min_sum_u2_ = 0.0;   // min_temperature in internal units of Σ u²
   std::uint64_t collisions_ = 0;
   std::uint64_t candidates_ = 0;
