@@ -311,6 +311,28 @@ py::array_t<T> column(const std::vector<sim::Sample>& samples, Get get) {
   return a;
 }
 
+// The contact statistics of every sample (contact_statistics = True), under the names of the
+// result CSV's columns: the sums of the collisions since the previous sample, and the
+// impact-parameter histogram as one row of ContactMoments::k_impact_bins counts per sample.
+void add_contact_columns(py::dict& d, const std::vector<sim::Sample>& s) {
+  using C = sim::ContactMoments;
+  d["contacts"] = column<std::uint64_t>(s, [](const sim::Sample& x) { return x.contacts.count; });
+  const std::pair<const char*, double C::*> sums[] = {{"sum_c1e_c2e", &C::sum_c1e_c2e},
+                                                      {"sum_c1_dot_c2", &C::sum_c1_dot_c2},
+                                                      {"sum_gn2", &C::sum_gn2},
+                                                      {"sum_abs_gn", &C::sum_abs_gn},
+                                                      {"sum_g2", &C::sum_g2}};
+  for (const auto& [name, field] : sums)
+    d[name] = column<double>(s, [field](const sim::Sample& x) { return x.contacts.*field; });
+  constexpr auto bins = static_cast<py::ssize_t>(C::k_impact_bins);
+  py::array_t<std::uint64_t> impact({static_cast<py::ssize_t>(s.size()), bins});
+  auto view = impact.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < s.size(); ++i)
+    for (py::ssize_t b = 0; b < bins; ++b)
+      view(static_cast<py::ssize_t>(i), b) = s[i].contacts.impact_histogram[b];
+  d["impact"] = impact;
+}
+
 py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimension) {
   const auto n = static_cast<py::ssize_t>(flat.size()) / dimension;
   py::array_t<double> a({n, static_cast<py::ssize_t>(dimension)});
@@ -417,6 +439,7 @@ py::dict simulate(const py::kwargs& kwargs) {
   d["events"] = column<std::uint64_t>(s, [](const sim::Sample& x) { return x.events; });
   d["velocity_mode"] = column<double>(s, [](const sim::Sample& x) { return x.velocity_mode; });
   d["density_mode"] = column<double>(s, [](const sim::Sample& x) { return x.density_mode; });
+  if (r.parameters.contact_statistics) add_contact_columns(d, s);
   py::list snapshots;
   for (const auto& snap : r.snapshots) {
     py::dict sd;
@@ -475,6 +498,10 @@ std::string simulate_doc() {
       "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
       "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"
       "      density fluctuations); collisions, events: uint64 arrays, counts up to each sample;\n"
+      "  with contact_statistics = True also, per sample, of the collisions since the one\n"
+      "      before (the result CSV's columns): contacts (uint64), sum_c1e_c2e, sum_c1_dot_c2,\n"
+      "      sum_gn2, sum_abs_gn, sum_g2 (float64), and impact (uint64, samples x 10): the\n"
+      "      impact-parameter histogram;\n"
       "  snapshots: list of dicts with t, box, collisions (since t = 0) and positions, velocities\n"
       "      (float64, N x d), one per snapshot time;\n"
       "  parameters: dict of every run parameter above (choices as their names);\n"

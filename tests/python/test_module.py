@@ -300,6 +300,20 @@ def test_simulate_snapshots_match_snapshot_csv(molchaos_bin, tmp_path):
     np.testing.assert_array_equal(frame[["vx", "vy"]].to_numpy(), snap["velocities"])
 
 
+def test_simulate_contact_statistics_equal_the_cli_columns(molchaos_bin, tmp_path):
+    """contact_statistics = True gives the contact columns of the CLI's CSV (they were dropped)."""
+    run = molchaos.simulate(**SMALL, contact_statistics=True)
+    out = tmp_path / "run.csv"
+    simulate_cli(molchaos_bin, out, "--relax", "5", "--contacts")
+    frame, _ = molchaos.read_run_csv(out)
+    for key in ("contacts", "sum_c1e_c2e", "sum_c1_dot_c2", "sum_gn2", "sum_abs_gn", "sum_g2"):
+        np.testing.assert_array_equal(frame[key].to_numpy(), run[key], err_msg=key)
+    impact = frame[[f"impact_{b}" for b in range(10)]].to_numpy()
+    np.testing.assert_array_equal(impact, run["impact"])
+    assert run["impact"].sum() == run["contacts"].sum() > 0
+    assert "contacts" not in molchaos.simulate(**SMALL)
+
+
 def test_simulate_restart_continues_exactly(tmp_path):
     """A run to t = 5 with checkpoints, continued from its last one to t_end: the uninterrupted
     run's numbers, bit for bit (paper shuffle: the random generator is part of the state)."""
