@@ -72,6 +72,14 @@ inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_clos
           return "'" + text + "' is not a number; allowed range " + range;
         // An infinite end of a range is open: "inf" is read, and is out of every range.
         if (std::isinf(x)) return "value " + text + " is not finite; allowed range " + range;
+        // A value below the smallest subnormal reads as 0, which can mean something else (tc = 0
+        // turns the TC model off): refused, not rounded to 0.
+        if (x == 0 && text.substr(0, text.find_first_of("eEpP")).find_first_of("123456789") !=
+                          std::string::npos)
+          return "value " + text +
+                 " is below the smallest positive double (4.9e-324) and would "
+                 "read as 0; allowed range " +
+                 range;
         const bool ok_lo = lo_closed ? x >= lo : x > lo;
         const bool ok_hi = hi_closed ? x <= hi : x < hi;
         if (!ok_lo || !ok_hi) return "value " + text + " is outside the allowed range " + range;

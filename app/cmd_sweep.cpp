@@ -146,9 +146,9 @@ void run_sweep_command(SweepCliOptions& o) {
     const double se = std::hypot(s.A.error, p.A_theory.error);
     const bool error_bar = s.runs >= 2 && se > 0;
     std::cout << fmt::format(
-        "{:>8} {:>6} {:>6} {:>6} {:>12.5f} {:>10} {:>12.5f} {:>9} {:>5}{}\n", s.density,
+        "{:>8} {:>6} {:>6} {:>6} {:>12.7g} {:>10} {:>12.7g} {:>9} {:>5}{}\n", s.density,
         s.restitution, validation::method_name(p.method), s.mode, s.A.value,
-        error_bar ? fmt::format("{:.5f}", s.A.error) : "-", p.A_theory.value,
+        error_bar ? fmt::format("{:.4g}", s.A.error) : "-", p.A_theory.value,
         error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
         error_bar     ? ""
         : s.runs == 0 ? "  (not measured: no run succeeded)"

@@ -178,18 +178,28 @@ std::string setup_section(const ReproduceResults& r, const std::string& command)
        ". Units σ = m = k_B = 1, T0 = 1, T = m⟨v²⟩/d, time in σ(m/T0)^½. Every simulated number "
        "is the mean over independent runs ± its standard error; every theory number carries "
        "its quadrature error estimate.\n\n";
+  // The stages only when a target error asked for them (--quick runs its seeds alone).
+  const double largest = steps::largest_relative_error_of_A(r);
+  const std::string largest_text =
+      largest > 0.0 ? fmt::format("{:.3f} %", 100.0 * largest) : "not measured (one run a point)";
+  const std::string stages =
+      c.target_relative_error > 0.0
+          ? fmt::format(
+                "then, in stages, the seeds a relative standard error of A of {:.2f} % "
+                "needs at the scatter per run of a smooth model of each gas over ε, and "
+                "more where a point's own error was still above it (the runs column; the "
+                "largest left is {})",
+                100.0 * c.target_relative_error, largest_text)
+          : fmt::format("and no further stages (the largest relative standard error of A is {})",
+                        largest_text);
   s += fmt::format(
       "d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density), then, in stages, "
-      "the seeds a relative standard error of A of {:.2f} % needs at the scatter per run of a "
-      "smooth model of each gas over ε, and more where a point's own error was still above it "
-      "(the runs column; the largest left is {:.3f} %), runs of {} kinetic-theory τ0; A from the "
-      "integrated form of Haff's law over each run's window (the estimator finding below). "
-      "Modes: `none` (original gas), `paper` (the paper's shuffle), `flux` (flux-weighted "
-      "shuffle).\n\n",
+      "(the same {} relaxed initial states for every ε and mode at one density), {}, runs of {} "
+      "kinetic-theory τ0; A from the integrated form of Haff's law over each run's window (the "
+      "estimator finding below). Modes: `none` (original gas), `paper` (the paper's shuffle), "
+      "`flux` (flux-weighted shuffle).\n\n",
       c.particles, fmt::join(c.densities, ", "), c.restitutions.front(), c.restitutions.back(),
-      c.restitutions.size(), c.seeds, c.seeds, 100.0 * c.target_relative_error,
-      100.0 * steps::largest_relative_error_of_A(r), c.t_end_in_tau0);
+      c.restitutions.size(), c.seeds, c.seeds, stages, c.t_end_in_tau0);
   if (r.failed_runs > 0) {
     s += fmt::format("**{} run(s) failed**:\n\n", r.failed_runs);
     for (const auto& f : r.failures) s += "- " + f + "\n";
