@@ -76,6 +76,8 @@ Engine<D, Observer>::Engine(const Parameters& p)
 
   min_temperature_ = p.min_temperature;
   const double collision_frequency = enskog_collision_frequency(D, p.density, 1.0);
+  collision_frequency_ = collision_frequency;
+  restitution_ = p.restitution;
   micro_interval_ = k_micro_fraction / collision_frequency;
   {
     // Events per collision of a homogeneous gas (independent of T): the collision, up to four
@@ -130,6 +132,34 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
   stop_ = false;
   build_cells();
   rebuild_events();
+}
+
+template <int D, class Observer>
+void Engine<D, Observer>::check_run_length(double t_end) const {
+  // Collisions per particle to t_end: omega_E t at restitution 1; below it, with Haff's law
+  // T = (1 + t/tau0)^-2 and tau0 = 2d/((1 - eps^2) omega_E) (the first-order cooling rate,
+  // zeta = (1 - eps^2) omega_E sqrt(T) / d), omega_E tau0 ln(1 + t/tau0).
+  const double cooling = (1.0 - restitution_) * (1.0 + restitution_);
+  const double tau0 = 2.0 * D / (cooling * collision_frequency_);
+  const double per_particle = cooling > 0
+                                  ? collision_frequency_ * tau0 * std::log1p(t_end / tau0)
+                                  : collision_frequency_ * t_end;
+  const double capped = collision_limit_ > 0
+                            ? std::min(per_particle, 2.0 * static_cast<double>(collision_limit_) / n_)
+                            : per_particle;
+  const double expected_events = capped * n_ / 2.0 * events_per_collision_;
+  if (!(expected_events > k_max_relaxation_events)) return;
+  const double most_per_particle = k_max_relaxation_events / events_per_collision_ * 2.0 / n_;
+  const double most = cooling > 0 ? tau0 * std::expm1(most_per_particle / (collision_frequency_ * tau0))
+                                  : most_per_particle / collision_frequency_;
+  char text[160];
+  std::snprintf(text, sizeof text,
+                " would take about %.2g events at this density (%.2g per collision, most of them "
+                "cell crossings)",
+                expected_events, events_per_collision_);
+  throw std::invalid_argument("t_end: " + message_number(t_end) + text + "; allowed range (0, " +
+                              message_number(most) +
+                              "] here: a shorter run or a denser gas");
 }
 
 template <int D, class Observer>

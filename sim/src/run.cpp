@@ -114,6 +114,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
   };
   using RunEngine = Engine<D, Observer>;
   RunEngine engine(p);
+  engine.check_run_length(p.t_end);  // before the relaxation, which it would waste
 
   RunResult result;
   result.parameters = p;

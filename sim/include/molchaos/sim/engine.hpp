@@ -60,6 +60,13 @@ class Engine {
   bool relax(double collisions_per_particle, const std::function<bool()>& go_on = {},
              std::uint64_t pause_events = std::uint64_t{1} << 20);
 
+  /// Refuses (std::invalid_argument naming t_end and its range here) a run from T = 1 to the
+  /// physical time t_end that would take more than 1e11 events by the homogeneous gas's
+  /// estimate (Haff's law with the first-order cooling rate below restitution 1), as relax()
+  /// refuses a relaxation: in extremely dilute gases, where cell crossings outnumber collisions
+  /// by far, such a run would go on for days without a word.
+  void check_run_length(double t_end) const;
+
   /// Replaces the state (tests): positions in [0, box)^d, physical velocities; time reset to 0.
   void set_state(const std::vector<double>& positions, const std::vector<double>& velocities);
 
@@ -298,6 +305,8 @@ class Engine {
   std::uint64_t collision_limit_ = 0;
   std::uint64_t event_limit_ = 0;  // from collision_limit_ (set_collision_limit)
   double events_per_collision_ = 1;  // of a homogeneous gas (constructor)
+  double collision_frequency_ = 1;   // Enskog's, per particle at T = 1 (constructor)
+  double restitution_ = 1;
   double min_temperature_ = 0;
   std::uint64_t debug_check_every_ = 0;
   Rng shuffle_rng_;
