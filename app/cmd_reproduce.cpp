@@ -39,7 +39,7 @@ struct ReproduceCliOptions {
   bool quick = false;
   int seeds = 0;
   int threads = 0;
-  bool figures = true;
+  bool no_figures = false;
   bool relax_each_run = false;
   bool quiet = false;
 };
@@ -113,7 +113,7 @@ std::string report_command(const ReproduceCliOptions& o) {
   std::string command = "molchaos reproduce";
   if (o.quick) command += " --quick";
   if (o.seeds > 0) command += fmt::format(" --seeds {}", o.seeds);
-  if (!o.figures) command += " --no-figures";
+  if (o.no_figures) command += " --no-figures";
   return command;
 }
 
@@ -205,7 +205,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
   }
   std::vector<std::string> figure_files;
 #ifdef MOLCHAOS_HAVE_FIGURES
-  if (o.figures) {
+  if (!o.no_figures) {
     figures::RenderOptions ro;
     ro.output_directory = o.out;
     ro.interrupt = &g_interrupt;
@@ -255,7 +255,7 @@ void add_reproduce_command(CLI::App& app) {
       ->transform(integer_in(1, 10000));
   CLI::Option* threads = cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
                              ->transform(integer_in(0, 1024));
-  cmd->add_flag("!--no-figures", o->figures, "skip rendering");
+  cmd->add_flag("--no-figures", o->no_figures, "skip rendering");
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr (notes and errors still)");
   cmd->add_flag("--relax-each-run", o->relax_each_run,
                 "relax every run itself instead of restoring the relaxed state of an earlier run "
