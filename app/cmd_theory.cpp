@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -41,6 +42,9 @@ struct TheoryOptions {
   double tolerance = theory::QuadratureOptions{}.relative_tolerance;
   std::string quadrature = "gauss";
   bool json = false;
+  /// --b's text when it is not a finite number, refused in validate_theory_inputs: b's range
+  /// depends on --dim and --restitution, known only once every flag is read.
+  std::string b_refused_text;
 };
 
 theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
@@ -53,6 +57,40 @@ theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
 
 nlohmann::json number_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+// A number in text without a sign on zero: "-0" or "-0.0000" (−0, or a tiny negative value
+// rounded away) reads as a negative quantity that is not there.
+std::string unsigned_zero(std::string text) {
+  if (!text.empty() && text[0] == '-' && text.find_first_of("123456789") == std::string::npos)
+    text.erase(0, 1);
+  return text;
+}
+
+// The digits a value's error supports: the last printed digit at the error's second significant
+// digit (the errors are printed with two), i.e. at 10^(⌊log10 error⌋ − 1). `most` caps them: the
+// default Gauss rules' errors, near rounding, support more digits than the columns show, and
+// those columns stay as they are.
+int last_digit_exponent(double error) {
+  return static_cast<int>(std::floor(std::log10(error))) - 1;
+}
+
+// value in fixed notation to the decimals its error supports (at most `most`).
+std::string fixed(double value, double error, int most) {
+  int decimals = most;
+  if (error > 0.0 && std::isfinite(error))
+    decimals = std::clamp(-last_digit_exponent(error), 0, most);
+  return unsigned_zero(fmt::format("{:.{}f}", value, decimals));
+}
+
+// value in general notation to the significant digits its error supports (at most `most`).
+std::string general(double value, double error, int most) {
+  int digits = most;
+  if (error > 0.0 && std::isfinite(error) && value != 0.0 && std::isfinite(value)) {
+    const int magnitude = static_cast<int>(std::floor(std::log10(std::abs(value))));
+    digits = std::clamp(magnitude - last_digit_exponent(error) + 1, 1, most);
+  }
+  return unsigned_zero(fmt::format("{:.{}g}", value, digits));
 }
 
 nlohmann::json to_json(const theory::PaperCheck& c, const std::string& term) {
@@ -77,7 +115,7 @@ std::string exact_text(int dimension, double dyad_factor, const std::string& ter
 }
 
 std::string verdict_text(const theory::PaperCheck& c) {
-  if (!c.reproduced) return "-";
+  if (!c.reproduced) return c.paper && !c.note.empty() ? c.note : "-";
   return *c.reproduced ? "reproduced" : "NOT reproduced";
 }
 
@@ -94,15 +132,26 @@ void validate_theory_inputs(const TheoryOptions& o) {
   }
   const double a2 = theory::a2_first_sonine(o.dimension, o.restitution);
   // By the exact Gauss rules whatever --quadrature says: the range is the integrands' (the two
-  // quadratures agree to 1e-12), and the adaptive one would take seconds before refusing.
+  // quadratures agree to 1e-12), and the adaptive one would take seconds before refusing. With
+  // a2's uncertainty, as predict_cooling takes it, so that both name one range.
+  const double a2_error = theory::a2_from_moments(o.dimension, o.restitution).error;
   const auto range = theory::correlation_b_range(o.dimension, a2, theory::k_paper_dyad_factor,
-                                                 theory::QuadratureOptions{});
+                                                 theory::QuadratureOptions{}, a2_error);
+  const std::string allowed = fmt::format(
+      "allowed range {} for --dim {}, --restitution {} (where the ansatz's f2 at grazing impact "
+      "and the collision rate stay positive, and μ2 is positive beyond its error: a cooling time "
+      "exists)",
+      theory::range_text(range), o.dimension, o.restitution);
+  if (!o.b_refused_text.empty()) {
+    double x = 0.0;
+    const std::size_t used = parse_real(o.b_refused_text, x);
+    const bool infinite = used == o.b_refused_text.size() && std::isinf(x);
+    throw UsageError("--b",
+                     infinite ? fmt::format("value {} is not finite; {}", o.b_refused_text, allowed)
+                              : fmt::format("'{}' is not a number; {}", o.b_refused_text, allowed));
+  }
   if (!(o.correlation_b >= range.lower && o.correlation_b < range.upper))
-    throw UsageError(
-        "--b", fmt::format("value {} is outside the allowed range [{}, {}) for --dim {}, "
-                           "--restitution {} (where the ansatz's f2 at grazing impact, the "
-                           "collision rate and μ2 stay positive)",
-                           o.correlation_b, range.lower, range.upper, o.dimension, o.restitution));
+    throw UsageError("--b", fmt::format("value {} is outside the {}", o.correlation_b, allowed));
 }
 
 // Everything `molchaos theory` prints, computed once.
@@ -144,8 +193,8 @@ TheoryResults compute_theory(const TheoryOptions& o) {
                     : theory::expand_collision_moment(o.dimension, 2, 0.5, o.dimension, quad);
   r.coefficient_rows = theory::coefficient_checks(r.table);
   r.prefactor_rows = theory::prefactor_checks(o.dimension, quad);
-  r.b_range =
-      theory::correlation_b_range(o.dimension, r.prediction.a2, theory::k_paper_dyad_factor, quad);
+  r.b_range = theory::correlation_b_range(o.dimension, r.prediction.a2, theory::k_paper_dyad_factor,
+                                          quad, r.prediction.a2_error);
   // The second-order Sonine theory and the contact response always use the exact Gauss rules
   // (the adaptive check of these 2 × 12 + 12 terms would take minutes; the tests run it).
   const theory::QuadratureOptions gauss;
@@ -166,9 +215,14 @@ TheoryResults compute_theory(const TheoryOptions& o) {
     };
     const double ratio_error =
         ratio.error + slope(h, 0.0) * lv[i]->a2.error + slope(0.0, h) * lv[i]->a3.error;
-    const double A = 1.0 / (r.prediction.omega0 * ratio.value);
-    r.A_by_level[i] = {A, std::abs(A) * ratio_error / std::abs(ratio.value)};
+    r.A_by_level[i] =
+        theory::cooling_prefactor_A(o.dimension, o.density, 1.0, {ratio.value, ratio_error});
   }
+  // The first level is the header's prediction (first-Sonine a2, a3 = 0, the given b): one
+  // quantity, so one value and one error, the prediction's (which carries the quadrature's
+  // uncertainty of that a2 too). Not under --quadrature adaptive, whose prediction is by another
+  // rule than this table.
+  if (quad.method == theory::QuadratureMethod::gauss) r.A_by_level[0] = r.prediction.A;
   r.contact = theory::contact_response(o.dimension, theory::k_paper_dyad_factor, gauss);
   r.contact_traceless = theory::contact_response(o.dimension, o.dimension, gauss);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -227,7 +281,9 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
   j["A_error"] = p.A.error;
   j["A_uncorrelated"] = p.A_uncorrelated.value;
   j["enskog_collision_frequency"] = p.enskog_collision_frequency;
-  j["b_range"] = {{"lower", r.b_range.lower}, {"upper", number_or_null(r.b_range.upper)}};
+  j["b_range"] = {{"lower", r.b_range.lower},
+                  {"upper", number_or_null(r.b_range.upper)},
+                  {"upper_error", r.b_range.upper_error}};
   j["coefficients"] = nlohmann::json::array();
   for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
     j["coefficients"].push_back(to_json(r.coefficient_rows[i], r.table.terms[i].name));
@@ -270,18 +326,23 @@ void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
         "  note: η lies beyond the equilibrium fluid (η ≤ {} for {}): g2(σ), from the fluid's "
         "equation of state, and every number below built on it are extrapolations\n",
         theory::fluid_limit_packing(o.dimension), o.dimension == 2 ? "disks" : "spheres");
-  std::cout << fmt::format("  a2(ε)                {:.10g}\n", p.a2);
-  std::cout << fmt::format("  μ2                   {:.12g} ± {:.2g}\n", p.mu2.value, p.mu2.error);
-  std::cout << fmt::format("  μ2/μ2(0,0)           {:.12g} ± {:.2g}\n", p.mu2_ratio.value,
-                           p.mu2_ratio.error);
+  std::cout << fmt::format("  a2(ε)                {}\n",
+                           unsigned_zero(fmt::format("{:.10g}", p.a2)));
+  std::cout << fmt::format("  μ2                   {} ± {:.2g}\n",
+                           general(p.mu2.value, p.mu2.error, 12), p.mu2.error);
+  std::cout << fmt::format("  μ2/μ2(0,0)           {} ± {:.2g}\n",
+                           general(p.mu2_ratio.value, p.mu2_ratio.error, 12), p.mu2_ratio.error);
   std::cout << fmt::format("  ω0                   {:.10g}\n", p.omega0);
-  std::cout << fmt::format("  τ0                   {:.10g} ± {:.2g}\n", p.tau0.value, p.tau0.error);
-  std::cout << fmt::format("  A = τ0(1-ε²)         {:.10g} ± {:.2g}\n", p.A.value, p.A.error);
-  std::cout << fmt::format("  A (b = 0)            {:.10g} ± {:.2g}\n", p.A_uncorrelated.value,
+  std::cout << fmt::format("  τ0                   {} ± {:.2g}\n",
+                           general(p.tau0.value, p.tau0.error, 10), p.tau0.error);
+  std::cout << fmt::format("  A = τ0(1-ε²)         {} ± {:.2g}\n",
+                           general(p.A.value, p.A.error, 10), p.A.error);
+  std::cout << fmt::format("  A (b = 0)            {} ± {:.2g}\n",
+                           general(p.A_uncorrelated.value, p.A_uncorrelated.error, 10),
                            p.A_uncorrelated.error);
   std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n", p.enskog_collision_frequency);
-  std::cout << fmt::format("  allowed b            [{:.6g}, {:.6g})\n\n", r.b_range.lower,
-                           r.b_range.upper);
+  std::cout << fmt::format("  allowed b            [{:.6g}, {})\n\n", r.b_range.lower,
+                           general(r.b_range.upper, r.b_range.upper_error, 6));
 }
 
 void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
@@ -290,8 +351,8 @@ void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
   for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
     const auto& c = r.coefficient_rows[i];
     std::cout << fmt::format(
-        "{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}  {}\n", c.quantity,
-        c.paper ? fmt::format("{:.6f}", *c.paper) : "-", c.computed, c.error,
+        "{:<34} {:>14} {:>20} {:>9.1e} {:>10}  {}\n", c.quantity,
+        c.paper ? fmt::format("{:.6f}", *c.paper) : "-", fixed(c.computed, c.error, 15), c.error,
         exact_text(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name),
         verdict_text(c));
   }
@@ -300,14 +361,16 @@ void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
                     : std::string(
                           "\ntraceless dyad (2·ee − U) instead of the printed 3·ee − U:\n"));
   for (const auto& t : r.traceless.terms)
-    std::cout << fmt::format("{:<34} {:>14} {:>20.15f} {:>9.1e} {:>10}\n",
-                             "μ2 coefficient of " + t.name, "-", t.coefficient.value,
+    std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9.1e} {:>10}\n",
+                             "μ2 coefficient of " + t.name, "-",
+                             fixed(t.coefficient.value, t.coefficient.error, 15),
                              t.coefficient.error, exact_text(o.dimension, o.dimension, t.name));
   std::cout << fmt::format("\n{:<52} {:>10} {:>14} {:>9}  {}\n", "prefactor", "paper", "computed",
                            "error", "verdict");
   for (const auto& c : r.prefactor_rows)
-    std::cout << fmt::format("{:<52} {:>10.6f} {:>14.10f} {:>9.1e}  {}\n", c.quantity,
-                             c.paper.value_or(std::nan("")), c.computed, c.error, verdict_text(c));
+    std::cout << fmt::format("{:<52} {:>10.6f} {:>14} {:>9.1e}  {}\n", c.quantity,
+                             c.paper.value_or(std::nan("")), fixed(c.computed, c.error, 10),
+                             c.error, verdict_text(c));
 }
 
 void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
@@ -318,9 +381,10 @@ void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
   const auto lv = levels(r.sonine);
   for (std::size_t i = 0; i < lv.size(); ++i)
     std::cout << fmt::format(
-        "{:<14} {:>13.10f} ± {:<6.1e} {:>13.10f} ± {:<6.1e} {:>13.9f} ± {:<6.1e}\n", lv[i]->level,
-        lv[i]->a2.value, lv[i]->a2.error, lv[i]->a3.value, lv[i]->a3.error, r.A_by_level[i].value,
-        r.A_by_level[i].error);
+        "{:<14} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e}\n", lv[i]->level,
+        fixed(lv[i]->a2.value, lv[i]->a2.error, 10), lv[i]->a2.error,
+        fixed(lv[i]->a3.value, lv[i]->a3.error, 10), lv[i]->a3.error,
+        fixed(r.A_by_level[i].value, r.A_by_level[i].error, 9), r.A_by_level[i].error);
 }
 
 void print_contact_text(const theory::ContactResponse& c) {
@@ -331,7 +395,8 @@ void print_contact_text(const theory::ContactResponse& c) {
   for (const auto& [name, s] : contact_rows(c)) {
     const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
     auto cell = [&](const theory::Estimate& e, int k) {
-      return fmt::format("{:.12f} ({:>5})", e.value, x ? x->texts[k] : "-");
+      return fmt::format("{} ({:>5})", unsigned_zero(fmt::format("{:.12f}", e.value)),
+                         x ? x->texts[k] : "-");
     };
     std::cout << fmt::format("{:<26} {:>26} {:>26} {:>26} {:>26}\n", name, cell(s->value, 0),
                              cell(s->d_a2, 1), cell(s->d_b, 2), cell(s->d_a2b, 3));
@@ -346,9 +411,14 @@ void print_theory_text(const TheoryOptions& o, const TheoryResults& r,
   print_contact_text(r.contact);
   if (o.dimension == 2) print_contact_text(r.contact_traceless);
   std::cout << hydrodynamics_text(o.dimension, o.restitution, o.density, h);
-  std::cout << fmt::format(
-      "\ncomputed in {:.3f} s ({} quadrature{})\n", r.seconds, o.quadrature,
-      o.quadrature == "adaptive" ? fmt::format(", tolerance {:g}", o.tolerance) : std::string());
+  if (o.quadrature == "adaptive")
+    std::cout << fmt::format(
+        "\ncomputed in {:.3f} s (adaptive quadrature, tolerance {:g}: the prediction, allowed b, "
+        "the μ2 coefficients and the prefactors; exact Gauss rules: the Sonine levels and the "
+        "colliding pairs)\n",
+        r.seconds, o.tolerance);
+  else
+    std::cout << fmt::format("\ncomputed in {:.3f} s (gauss quadrature)\n", r.seconds);
 }
 
 void run_theory(const TheoryOptions& o, const HydrodynamicsOptions& h) {
@@ -369,10 +439,24 @@ void add_theory_command(CLI::App& app) {
   add_parameter_option(cmd, "dimension", options->dimension);
   add_parameter_option(cmd, "restitution", options->restitution);
   add_parameter_option(cmd, "density", options->density);
+  // b's range depends on --dim and --restitution: a text that is no finite number is kept and
+  // refused once they are known (validate_theory_inputs), with the real range; a shared
+  // real_in(-inf, inf) would name an infinite range that is not b's.
   cmd->add_option("--b", options->correlation_b,
                   "velocity-correlation coefficient b (range: where f2 and μ2 stay positive)")
-      ->transform(real_in(-std::numeric_limits<double>::infinity(), false,
-                          std::numeric_limits<double>::infinity(), false))
+      ->transform(CLI::Validator(
+          [options](std::string& text) -> std::string {
+            double x = 0.0;
+            const std::size_t used = parse_real(text, x);
+            if (used == 0 || used != text.size() || !std::isfinite(x)) {
+              options->b_refused_text = text;
+              text = "0";
+            } else if (x == 0) {
+              text = "0";  // -0 is 0, as real_in makes it
+            }
+            return {};
+          },
+          "in [-2, b_max(--dim, --restitution))"))
       ->capture_default_str();
   cmd->add_option("--quadrature", options->quadrature,
                   "gauss (exact fixed rules) or adaptive (GSL QAGIU, the independent check)")
@@ -389,8 +473,9 @@ void add_theory_command(CLI::App& app) {
   set_callback_with_config(cmd, [options, hydrodynamics, tolerance] {
     // The Gauss rules are exact for these integrands: a tolerance would be taken and do nothing.
     if (tolerance->count() > 0 && options->quadrature != "adaptive")
-      throw UsageError("--tolerance", "applies to --quadrature adaptive only (the default Gauss "
-                                      "rules are exact and take no tolerance)");
+      throw UsageError("--tolerance",
+                       "applies to --quadrature adaptive only (the default Gauss "
+                       "rules are exact and take no tolerance)");
     run_theory(*options, *hydrodynamics);
   });
 }

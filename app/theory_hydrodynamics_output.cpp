@@ -19,6 +19,7 @@ nlohmann::json finite_or_null(double x) {
 
 struct LargestShearMode {
   double box = 0, wavenumber = 0, rate = 0, collisions = 0, time = 0;
+  double log_time = 0;  ///< ln t, finite where t overflows a double
 };
 
 // τ collisions per particle after time t of Haff's law: τ = ω_E(T0) τ0 ln(1 + t/τ0), since
@@ -39,9 +40,12 @@ LargestShearMode largest_shear_mode(const theory::TransportCoefficients& c, int 
   in.restitution = restitution;
   const auto p = theory::predict_cooling(in);
   const double scale = p.enskog_collision_frequency * p.tau0.value;
-  m.time = std::isfinite(m.collisions) && std::isfinite(scale)
-               ? p.tau0.value * std::expm1(m.collisions / scale)
-               : std::numeric_limits<double>::infinity();
+  const bool finite = std::isfinite(m.collisions) && std::isfinite(scale);
+  m.time = finite ? p.tau0.value * std::expm1(m.collisions / scale)
+                  : std::numeric_limits<double>::infinity();
+  m.log_time = finite ? theory::log_time_after_collisions(m.collisions, p.tau0.value,
+                                                          p.enskog_collision_frequency)
+                      : std::numeric_limits<double>::infinity();
   return m;
 }
 
@@ -65,7 +69,13 @@ void add_hydrodynamics_json(nlohmann::json& j, int dimension, double restitution
   const auto m = largest_shear_mode(c, dimension, restitution, density, h);
   j["critical_box_size"] = finite_or_null(theory::critical_box_size(c));
   j["critical_shear_wavenumber"] = theory::critical_shear_wavenumber(c);
-  j["critical_heat_wavenumber"] = theory::critical_heat_wavenumber(c);
+  // Where the longitudinal modes grow at every k no k∥ exists: null, and the flag says why (a
+  // 0 read as 2π/k∥ = ∞ would say the opposite, never unstable).
+  const bool every_wavelength = theory::heat_mode_unstable_at_every_wavelength(c);
+  j["critical_heat_wavenumber"] = every_wavelength
+                                      ? nlohmann::json(nullptr)
+                                      : nlohmann::json(theory::critical_heat_wavenumber(c));
+  j["heat_mode_unstable_at_every_wavelength"] = every_wavelength;
   j["transport"] = {
       {"cooling_rate", c.cooling_rate},           {"pressure", c.pressure},
       {"compressibility", c.compressibility},     {"shear_viscosity", c.shear_viscosity},
@@ -78,7 +88,8 @@ void add_hydrodynamics_json(nlohmann::json& j, int dimension, double restitution
                              {"rate_per_collision", m.rate},
                              {"growth", h.growth},
                              {"collisions_per_particle", finite_or_null(m.collisions)},
-                             {"time", finite_or_null(m.time)}};
+                             {"time", finite_or_null(m.time)},
+                             {"log_time", finite_or_null(m.log_time)}};
 }
 
 std::string hydrodynamics_text(int dimension, double restitution, double density,
@@ -90,9 +101,15 @@ std::string hydrodynamics_text(int dimension, double restitution, double density
       "per particle)\n";
   s += fmt::format("  η*, κ*, μ*, ζ*         {:.6g}, {:.6g}, {:.6g}, {:.6g}\n", c.shear_viscosity,
                    c.thermal_conductivity, c.heat_flux_density, c.cooling_rate);
-  s += fmt::format("  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode 2π/k∥: {:.6g} σ)\n",
-                   theory::critical_box_size(c),
-                   2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
+  if (theory::heat_mode_unstable_at_every_wavelength(c))
+    s += fmt::format(
+        "  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode: no k∥, the longitudinal modes grow at "
+        "every wavelength: the first-Sonine Navier–Stokes description breaks down here)\n",
+        theory::critical_box_size(c));
+  else
+    s += fmt::format("  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode 2π/k∥: {:.6g} σ)\n",
+                     theory::critical_box_size(c),
+                     2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
   if (!(m.rate > 0)) {  // a box below L_c: the mode decays, the gas stays homogeneous
     s += fmt::format(
         "  N = {}: box {:.6g} σ, below L_c: the largest shear mode decays at {:.6g} per "
@@ -103,9 +120,11 @@ std::string hydrodynamics_text(int dimension, double restitution, double density
   s += fmt::format("  N = {}: box {:.6g} σ, largest shear mode grows at {:.6g} per collision\n",
                    h.particles, m.box, m.rate);
   s += fmt::format(
-      "  its S⊥ reaches {:g} after {:.6g} collisions per particle, t = {:.6g} "
+      "  its S⊥ reaches {:g} after {:.6g} collisions per particle, t = {} "
       "(ln t = {:.4g}) on Haff's law\n",
-      h.growth, m.collisions, m.time, std::log(m.time));
+      h.growth, m.collisions,
+      std::isfinite(m.time) ? fmt::format("{:.6g}", m.time) : "beyond the largest double",
+      m.log_time);
   return s;
 }
 

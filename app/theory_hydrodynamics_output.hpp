@@ -19,7 +19,10 @@ struct HydrodynamicsOptions {
 std::shared_ptr<HydrodynamicsOptions> add_hydrodynamics_options(CLI::App& cmd);
 
 /// Fills critical_box_size (σ), the critical wavenumbers, the transport coefficients and the
-/// largest shear mode's growth into the JSON document `j`.
+/// largest shear mode's growth into the JSON document `j`. critical_heat_wavenumber is null where
+/// no k∥ exists because the longitudinal modes grow at every wavelength
+/// (heat_mode_unstable_at_every_wavelength: true); largest_shear_mode.log_time is ln t, finite
+/// where time overflows a double (null there).
 void add_hydrodynamics_json(nlohmann::json& j, int dimension, double restitution, double density,
                             const HydrodynamicsOptions& h);
 

@@ -3,6 +3,7 @@
 #define BOOST_TEST_MODULE theory_cooling
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "molchaos/theory/contact_value.hpp"
@@ -163,4 +164,102 @@ BOOST_AUTO_TEST_CASE(error_estimates_are_magnitudes) {
         }
       }
     }
+}
+
+// Near ε = 1, a2 → 0 and b = 0 leave the quadrature errors ∝ |a2| → 0, but 1 + (3/16)a2 + …,
+// ω0 and τ0 = A/(1 − ε²) are still rounded: no error may fall below the rounding of its value
+// (μ2/μ2(0,0) was 0.9999999 ± 2e-20, A ± 0 at ε = 1). The floors asserted are the fewest
+// roundings each value has: the addition in the ratio (u), the product and reciprocal in A (2u),
+// the division in τ0 and the two products in μ2 (u, 2u). And a2(1) is +0, not −0.
+BOOST_AUTO_TEST_CASE(errors_do_not_fall_below_the_rounding_of_their_value) {
+  const double u = std::numeric_limits<double>::epsilon() / 2;
+  for (int d : {2, 3})
+    for (double eps : {0.999999, 1.0 - 1e-12, 1.0}) {
+      CoolingInputs in;
+      in.dimension = d;
+      in.restitution = eps;
+      const CoolingPrediction p = predict_cooling(in);
+      BOOST_TEST_INFO("d = " << d << ", eps = " << eps);
+      BOOST_TEST(p.A.error >= 2 * u * p.A.value);
+      BOOST_TEST(p.A_uncorrelated.error >= 2 * u * p.A_uncorrelated.value);
+      if (eps == 1.0) BOOST_TEST(!std::signbit(p.a2));
+      if (eps < 1.0) {
+        BOOST_TEST(p.mu2_ratio.error >= u * p.mu2_ratio.value);
+        BOOST_TEST(p.tau0.error >= u * p.tau0.value);
+        BOOST_TEST(p.mu2.error >= 2 * u * p.mu2.value);
+      }
+    }
+  BOOST_TEST(!std::signbit(a2_first_sonine(2, 1.0)));
+  BOOST_TEST(!std::signbit(a2_first_sonine(3, 1.0)));
+}
+
+// At ε = 1 the nominal end of b, R0/(−R1) = 1/(3/2 ± 8e-14), lay above the exact 2/3: b =
+// 0.666666666666668 was taken and gave μ2/μ2(0,0) = 7.8e-16 ± 5.5e-14 and A = 2.7e16 ± 1.9e18.
+// A b where μ2 is not positive beyond its error gives no cooling time: refused, and just inside
+// the range μ2/μ2(0,0) exceeds its error.
+BOOST_AUTO_TEST_CASE(b_range_ends_where_mu2_is_positive_beyond_its_error) {
+  CoolingInputs elastic;
+  elastic.restitution = 1.0;
+  elastic.correlation_b = 0.666666666666668;
+  BOOST_CHECK_THROW(predict_cooling(elastic), std::invalid_argument);
+  for (int d : {2, 3})
+    for (double eps : {0.3, 0.9, 1.0}) {
+      const double a2 = a2_first_sonine(d, eps);
+      const double a2_error = a2_from_moments(d, eps).error;
+      const CorrelationRange r = correlation_b_range(d, a2, k_paper_dyad_factor, {}, a2_error);
+      CoolingInputs in;
+      in.dimension = d;
+      in.restitution = eps;
+      in.correlation_b = std::nextafter(r.upper, 0.0);
+      const CoolingPrediction p = predict_cooling(in);
+      BOOST_TEST_INFO("d = " << d << ", eps = " << eps);
+      BOOST_TEST(p.mu2_ratio.value > p.mu2_ratio.error);
+      BOOST_TEST(std::isfinite(p.A.value));
+      BOOST_TEST(p.A.error < p.A.value);
+      // The nominal zero lies upper_error above the end, and the exact 2/3 of a2 = 0 within it.
+      BOOST_TEST(r.upper_error > 0.0);
+      if (eps == 1.0) BOOST_TEST(std::abs(r.upper + r.upper_error - 2.0 / 3.0) <= r.upper_error);
+    }
+}
+
+// The range's end printed to the digits its uncertainty supports, cut (never above the end).
+BOOST_AUTO_TEST_CASE(range_text_has_the_digits_of_its_error) {
+  const CorrelationRange r{-2.0, 0.6666666666666284, 3.8e-14};
+  BOOST_TEST(range_text(r) == "[-2, 0.666666666666628)");
+  const CorrelationRange coarse{-2.0, 0.67059, 1.2e-3};
+  BOOST_TEST(range_text(coarse) == "[-2, 0.6705)");
+}
+
+// Eq. mu2a2b is the paper's integral for disks (its Sonine polynomial, eq. Son2, is the 2D one),
+// and ω0 of eq. A is built on it: in d = 3 these rows make no claim (they were "NOT reproduced").
+// Eqs. tau0 and TDef are in d = 3 form and keep their verdicts; 1/3 carries its rounding.
+BOOST_AUTO_TEST_CASE(paper_prefactor_rows_for_disks_only_are_not_applicable_in_three_d) {
+  QuadratureOptions q;
+  const auto pre3 = prefactor_checks(3, q);
+  for (std::size_t i : {0u, 2u}) {
+    BOOST_TEST_INFO("row " << pre3.at(i).quantity);
+    BOOST_TEST(!pre3.at(i).reproduced.has_value());
+    BOOST_TEST(pre3.at(i).note.starts_with("not applicable (the paper's formula is for d = 2"));
+  }
+  BOOST_TEST(pre3.at(1).reproduced.value());
+  BOOST_TEST(pre3.at(3).reproduced.value());
+  BOOST_TEST(pre3.at(1).error > 0.0);  // 1/3 is rounded
+  const auto pre2 = prefactor_checks(2, q);
+  for (const auto& row : pre2) BOOST_TEST(row.reproduced.has_value());
+  BOOST_TEST(pre2.at(1).error == 0.0);  // 1/2 is exact
+}
+
+// ln t at the collisions where t = τ0(e^x − 1) overflows (x > 709): ln τ0 + x, finite; below,
+// the direct log of t.
+BOOST_AUTO_TEST_CASE(log_time_is_finite_where_the_time_overflows) {
+  const double tau0 = 112.1, omega = 0.1887;
+  for (double x : {1e-3, 0.5, 5.0, 50.0, 700.0}) {
+    const double direct = std::log(tau0 * std::expm1(x));
+    BOOST_TEST(std::abs(log_time_after_collisions(x * omega * tau0, tau0, omega) - direct) <=
+               1e-14 * std::abs(direct));
+  }
+  const double x = 6000.0;
+  const double ln_t = log_time_after_collisions(x * omega * tau0, tau0, omega);
+  BOOST_TEST(std::isfinite(ln_t));
+  BOOST_TEST(std::abs(ln_t - (std::log(tau0) + x)) <= 1e-12 * x);
 }

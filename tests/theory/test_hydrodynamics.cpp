@@ -117,3 +117,30 @@ BOOST_AUTO_TEST_CASE(transverse_structure_factor_limits) {
   const double tau = collisions_to_reach(c, 0.5 * ks, 10.0);
   BOOST_TEST(std::abs(transverse_structure_factor(c, 0.5 * ks, tau) / 10.0 - 1) <= 1e-12);
 }
+
+// At strong dissipation μ* outgrows κ* (Cκ* − p*μ* < 0 with ζ*(p*g − C/2) > 0): the determinant
+// of the longitudinal matrix never vanishes and its largest eigenvalue stays positive at every
+// k, so no k∥ exists (critical_heat_wavenumber gave 0, printed as 2π/k∥ = inf, read as never
+// unstable). The flag is checked against the eigenvalues themselves over eight decades of k, at
+// restitutions either side of where it turns on (ε ≈ 0.32 for disks, 0.16 for spheres at
+// n = 0.05); where it is off, k∥ exists and the rate changes sign there.
+BOOST_AUTO_TEST_CASE(heat_mode_unstable_at_every_wavelength_at_strong_dissipation) {
+  BOOST_TEST(heat_mode_unstable_at_every_wavelength(at(2, 0.05, 0.2)));
+  BOOST_TEST(heat_mode_unstable_at_every_wavelength(at(3, 0.05, 0.1)));
+  for (int d : {2, 3})
+    for (double eps : {0.05, 0.1, 0.2, 0.3, 0.4, 0.6, 0.9}) {
+      const auto c = at(d, 0.05, eps);
+      BOOST_TEST_INFO("d = " << d << ", eps = " << eps);
+      if (heat_mode_unstable_at_every_wavelength(c)) {
+        for (double ks = 1e-4; ks <= 1e4; ks *= std::sqrt(10.0))
+          BOOST_TEST(longitudinal_mode_rate(c, ks / c.length_unit) > 0);
+        BOOST_TEST(critical_heat_wavenumber(c) == 0.0);
+      } else {
+        const double kh = critical_heat_wavenumber(c);
+        BOOST_TEST(kh > 0.0);
+        BOOST_TEST(longitudinal_mode_rate(c, 0.99 * kh) > 0);
+        BOOST_TEST(longitudinal_mode_rate(c, 1.01 * kh) < 0);
+      }
+    }
+  for (int d : {2, 3}) BOOST_TEST(!heat_mode_unstable_at_every_wavelength(at(d, 0.05, 1.0)));
+}

@@ -61,14 +61,31 @@ double ExpansionTable::ratio(double a2, double b) const { return ratio(PairShape
 
 double ExpansionTable::ratio(const PairShape& shape) const { return ratio_estimate(shape).value; }
 
-Estimate ExpansionTable::ratio_estimate(const PairShape& s) const {
+Estimate ExpansionTable::ratio_estimate(const PairShape& s, double a2_error) const {
   Estimate r{1.0, 0.0};
+  // An uncertain a2 moves the ratio by |∂ratio/∂a2|·δa2 (the polynomial differentiated).
+  double slope_a2 = 0.0;
+  // The rounding of the sum 1 + Σ c·m itself, which the coefficients' errors (∝ |m|) miss: they
+  // vanish with a2 and b (ε → 1), while 1 + … is still rounded. A non-zero term costs its
+  // monomial (pow(x, k), under 2u for k ≥ 2, exact for k ≤ 1; two products), the product with its
+  // coefficient (u of |c·m|) and the addition (u of the partial sum); a zero term is exact, so
+  // the ratio at a2 = a3 = b = 0 is 1 ± 0.
+  double rounding = 0.0;
   for (const auto& t : terms) {
     const double m =
         std::pow(s.a2, t.a2_power) * std::pow(s.a3, t.a3_power) * std::pow(s.b, t.b_power);
-    r.value += t.coefficient.value * m;
+    const double x = t.coefficient.value * m;
+    r.value += x;
     r.error += t.coefficient.error * std::abs(m);
+    if (t.a2_power > 0)
+      slope_a2 += t.coefficient.value * t.a2_power * std::pow(s.a2, t.a2_power - 1) *
+                  std::pow(s.a3, t.a3_power) * std::pow(s.b, t.b_power);
+    if (x != 0.0) {
+      const int pows = (t.a2_power > 1) + (t.a3_power > 1) + (t.b_power > 1);
+      rounding += rounding_bound(x, 2.0 * pows + 3.0) + rounding_bound(r.value, 1.0);
+    }
   }
+  r.error += rounding + std::abs(slope_a2) * a2_error;
   return r;
 }
 

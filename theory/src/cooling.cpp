@@ -35,6 +35,38 @@ double enskog_collision_frequency(int dimension, double density, double temperat
   return prefactor * density * g2 * std::sqrt(std::numbers::pi * temperature);
 }
 
+double omega0_relative_rounding(int dimension, double density) {
+  // ω0 = g2 · n · √(2T0) · μ̂_d / d, each operation off by at most u (estimate.hpp): μ̂_d = ½√(2π)
+  // or √(2π) (the rounded π, the root: 2u), √(2T0) (u), three products and the division (4u):
+  // 7u. g2 (contact_value.cpp): η = n·(π/4 or π/6) is off by 3u; its numerator 1 − x
+  // (x = 7η/16 or η/2, off by 4u) by u + 4u·x/(1 − x); its denominator (1 − η)^d by
+  // d(u + 3u·η/(1 − η)) + 2u (the square's product, or pow); the quotient by u. In all,
+  // u[7 + 4x/(1 − x) + 3d·η/(1 − η)] with d ≤ 3 over the 2 + 3u of the rest: the bound below.
+  const double eta = packing_fraction(dimension, density);
+  const double x = dimension == 2 ? 7.0 * eta / 16.0 : 0.5 * eta;
+  const double roundings = 14.0 + 4.0 * x / (1.0 - x) + 3.0 * dimension * eta / (1.0 - eta);
+  return roundings * k_unit_roundoff;
+}
+
+Estimate cooling_prefactor_A(int dimension, double density, double initial_temperature,
+                             const Estimate& mu2_ratio) {
+  const double omega0 = cooling_frequency_omega0(dimension, density, initial_temperature);
+  const double A = 1.0 / (omega0 * mu2_ratio.value);
+  // Relative errors add: the ratio's, ω0's rounding, and the product and reciprocal (2u).
+  const double relative = mu2_ratio.relative_error() +
+                          omega0_relative_rounding(dimension, density) + 2.0 * k_unit_roundoff;
+  return {A, std::abs(A) * relative};
+}
+
+double log_time_after_collisions(double collisions, double tau0,
+                                 double initial_collision_frequency) {
+  const double x = collisions / (initial_collision_frequency * tau0);
+  // ln(e^x − 1): directly while e^x − 1 is well inside a double (expm1 keeps small x exact),
+  // else as x + ln(1 − e^{−x}), whose log1p term is tiny and exact.
+  const double log_expm1 = x < 1.0 ? std::log(std::expm1(x)) : x + std::log1p(-std::exp(-x));
+  return std::log(tau0) + log_expm1;
+}
+
 CoolingPrediction predict_cooling(const CoolingInputs& in) {
   require_dimension(in.dimension);
   require_density(in.dimension, in.density);
@@ -64,27 +96,36 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   const double base_scale = one_minus_eps2 / ((1.0 - k_eps_table) * (1.0 + k_eps_table));
   const ExpansionTable table =
       expand_collision_moment(in.dimension, 2, k_eps_table, in.dyad_factor, in.quadrature);
-  require_correlation_b(table, out.a2, in.correlation_b, in.quadrature);
-  out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b});
-  const Estimate ratio_uncorrelated = table.ratio_estimate(PairShape{out.a2, 0.0, 0.0});
+  // The closed form of a2 is exact, but the suite vouches for it only as far as its own
+  // quadrature of the same moment equation confirms it: that error is carried, so that A here
+  // and A at the first_sonine level (sonine_hcs.hpp, shown beside it) carry one error. By the
+  // Gauss rules whatever the method (the adaptive μ4 table would double the time).
+  if (!in.a2) out.a2_error = a2_from_moments(in.dimension, in.restitution).error;
+  require_correlation_b(table, out.a2, in.correlation_b, in.quadrature, out.a2_error);
+  out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b}, out.a2_error);
+  const Estimate ratio_uncorrelated =
+      table.ratio_estimate(PairShape{out.a2, 0.0, 0.0}, out.a2_error);
   if (in.restitution < 1.0) {
     const double base = table.base.value * base_scale;
-    out.mu2 = {base * out.mu2_ratio.value,
-               std::abs(base) * out.mu2_ratio.error +
-                   table.base.error * base_scale * std::abs(out.mu2_ratio.value)};
+    // Beyond the quadrature: base_scale (1 − ε, 1 + ε, their product, the division: 4u) and the
+    // two products (2u).
+    const double value = base * out.mu2_ratio.value;
+    out.mu2 = {value, std::abs(base) * out.mu2_ratio.error +
+                          table.base.error * base_scale * std::abs(out.mu2_ratio.value) +
+                          rounding_bound(value, 6.0)};
   } else {
-    out.mu2 = {0.0, 0.0};  // elastic: no dissipation
+    out.mu2 = {0.0, 0.0};  // elastic: no dissipation, exactly
   }
 
   // A = 1/(ω0 μ2/μ2(0,0)): independent of ε except through a2 and b.
-  // Errors are magnitudes: the relative error of the ratio carries over to A.
-  out.A = {1.0 / (out.omega0 * out.mu2_ratio.value),
-           out.mu2_ratio.relative_error() / std::abs(out.omega0 * out.mu2_ratio.value)};
-  out.A_uncorrelated = {
-      1.0 / (out.omega0 * ratio_uncorrelated.value),
-      ratio_uncorrelated.relative_error() / std::abs(out.omega0 * ratio_uncorrelated.value)};
+  out.A = cooling_prefactor_A(in.dimension, in.density, in.initial_temperature, out.mu2_ratio);
+  out.A_uncorrelated =
+      cooling_prefactor_A(in.dimension, in.density, in.initial_temperature, ratio_uncorrelated);
   if (in.restitution < 1.0) {
-    out.tau0 = {out.A.value / one_minus_eps2, std::abs(out.A.error / one_minus_eps2)};
+    // τ0 = A/((1 − ε)(1 + ε)): the factors, their product and the division add 4u (1 − ε is
+    // exact for ε ≥ ½, counted anyway).
+    const double tau0 = out.A.value / one_minus_eps2;
+    out.tau0 = {tau0, std::abs(tau0) * (out.A.relative_error() + 4.0 * k_unit_roundoff)};
   } else {
     out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
   }

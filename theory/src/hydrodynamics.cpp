@@ -193,6 +193,20 @@ double critical_heat_wavenumber(const TransportCoefficients& c) {
   return k2 > 0 ? std::sqrt(k2) / c.length_unit : 0.0;
 }
 
+bool heat_mode_unstable_at_every_wavelength(const TransportCoefficients& c) {
+  // det = −k*²[ζ*(C/2 − p* g) + β k*²(Cκ* − p*μ*)] (longitudinal_mode_rate). With
+  // ζ*(p* g − C/2) > 0 and Cκ* − p*μ* ≤ 0 the bracket is negative for every k: the determinant
+  // never vanishes, no eigenvalue crosses zero, and the one that is positive as k → 0 (ζ*/2,
+  // the longitudinal velocity relative to the thermal one) stays positive. Strong dissipation
+  // gets there through μ* (the heat flux driven by density gradients) outgrowing κ*.
+  const int d = c.dimension;
+  const double g = 1.0 + log_derivative_g2(d, c.packing_fraction);
+  const double drive = c.cooling_rate * (c.pressure * g - 0.5 * c.compressibility);
+  const double damping =
+      c.compressibility * c.thermal_conductivity - c.pressure * c.heat_flux_density;
+  return drive > 0.0 && damping <= 0.0;
+}
+
 double critical_box_size(const TransportCoefficients& c) {
   const double k = critical_shear_wavenumber(c);
   return k > 0 ? 2.0 * k_pi / k : std::numeric_limits<double>::infinity();

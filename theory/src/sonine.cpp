@@ -21,8 +21,11 @@ double a2_first_sonine(int dimension, double restitution) {
   require_restitution(restitution);
   const double d = dimension;
   const double e = restitution;
+  // + 0.0: at ε = 1 the product is (+0)(−1) = −0, and −0 + (+0) = +0 (IEEE 754): a2 of the
+  // elastic gas is zero, not a negative zero in the output.
   return 16.0 * (1.0 - e) * (1.0 - 2.0 * e * e) /
-         (9.0 + 24.0 * d - (41.0 - 8.0 * d) * e + 30.0 * e * e * (1.0 - e));
+             (9.0 + 24.0 * d - (41.0 - 8.0 * d) * e + 30.0 * e * e * (1.0 - e)) +
+         0.0;
 }
 
 }  // namespace molchaos::theory

@@ -94,8 +94,9 @@ struct ExpansionTable {
   /// μ_p / μ_p(0,0) assembled from the coefficients.
   [[nodiscard]] double ratio(double a2, double b) const;
   [[nodiscard]] double ratio(const PairShape& shape) const;
-  /// The same with the propagated error of the coefficients.
-  [[nodiscard]] Estimate ratio_estimate(const PairShape& shape) const;
+  /// The same with the propagated error of the coefficients, the rounding of the sum, and an
+  /// uncertainty `a2_error` of shape.a2 carried through ∂ratio/∂a2.
+  [[nodiscard]] Estimate ratio_estimate(const PairShape& shape, double a2_error = 0.0) const;
 };
 
 /// Which Sonine terms the expansion carries: a2 and b only (the paper's ansatz), or a3 too.

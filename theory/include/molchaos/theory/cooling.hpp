@@ -34,6 +34,11 @@ struct CoolingPrediction {
   double packing_fraction = 0.0;
   double g2 = 0.0;
   double a2 = 0.0;
+  /// Uncertainty of a2 carried into μ2/μ2(0,0), A and τ0: for the default first-Sonine a2, how
+  /// far the suite's own quadrature of the moment equations confirms the closed form
+  /// (a2_from_moments by the Gauss rules, the error of the first_sonine level of sonine_hcs.hpp);
+  /// 0 for an a2 given as input.
+  double a2_error = 0.0;
   Estimate mu2;                             ///< μ2(a2, b; ε) by quadrature (g2 excluded)
   Estimate mu2_ratio;                       ///< μ2 / μ2(0,0)
   double omega0 = 0.0;                      ///< ω0 (closed form, derived above)
@@ -48,6 +53,21 @@ double mu2_maxwell_prefactor(int dimension);
 
 /// ω0 of the header comment.
 double cooling_frequency_omega0(int dimension, double density, double initial_temperature);
+
+/// Bound on the relative rounding of ω0 as cooling_frequency_omega0 computes it (the operations
+/// are counted in cooling.cpp); it grows as η/(1 − η) towards close packing, where 1 − η cancels.
+double omega0_relative_rounding(int dimension, double density);
+
+/// A = 1/(ω0 · μ2/μ2(0,0)) with its error: the ratio's (relative error carried over), the
+/// rounding of ω0 and that of the product and the reciprocal.
+Estimate cooling_prefactor_A(int dimension, double density, double initial_temperature,
+                             const Estimate& mu2_ratio);
+
+/// ln t after `collisions` collisions per particle on Haff's law, τ = ω_E(T0) τ0 ln(1 + t/τ0)
+/// (ω_E ∝ √T = √T0/(1 + t/τ0)), so t = τ0 (e^x − 1) with x = τ/(ω_E(T0) τ0). Computed as
+/// ln τ0 + x + ln(1 − e^{−x}), finite where t itself overflows a double (x beyond ~709).
+double log_time_after_collisions(double collisions, double tau0,
+                                 double initial_collision_frequency);
 
 /// Enskog's collision frequency per particle, ω = g2 n σ^{d−1} |S^{d−2}|-weighted ⟨|v12|⟩:
 /// 2 n σ g2 √(πT/m) for disks, 4 n σ² g2 √(πT/m) for spheres.

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace molchaos::theory {
 
@@ -15,6 +16,17 @@ struct Estimate {
     return value != 0.0 ? error / std::abs(value) : error;
   }
 };
+
+/// Unit roundoff u = 2⁻⁵³: an IEEE operation (+ − × ÷ √) on exact operands is off by at most u
+/// relative to its exact result; libm's pow, exp and log by under one ulp (2u).
+inline constexpr double k_unit_roundoff = std::numeric_limits<double>::epsilon() / 2.0;
+
+/// First-order bound on the rounding of a value produced by a chain of `roundings` operations,
+/// each off by at most u relative: roundings · u · |value|. The floor under every error estimate
+/// of a computed (not exact) number: no error bar can be finer than the arithmetic that made it.
+inline double rounding_bound(double value, double roundings) {
+  return roundings * k_unit_roundoff * std::abs(value);
+}
 
 /// Quotient with first-order propagation of the relative errors.
 inline Estimate divide(const Estimate& num, const Estimate& den) {

@@ -58,10 +58,18 @@ double shear_mode_rate(const TransportCoefficients& c, double wavenumber);
 /// linear system at wavenumber k, per collision per particle.
 double longitudinal_mode_rate(const TransportCoefficients& c, double wavenumber);
 
-/// Critical wavenumbers in 1/σ (0 for elastic collisions): shear modes with k < k⊥ and the heat
-/// mode with k < k∥ grow.
+/// Critical wavenumbers in 1/σ: shear modes with k < k⊥ and the heat mode with k < k∥ grow.
+/// 0 where no such k exists: for elastic collisions (nothing grows), and for the heat mode also
+/// where heat_mode_unstable_at_every_wavelength (it grows at every k: check that first).
 double critical_shear_wavenumber(const TransportCoefficients& c);
 double critical_heat_wavenumber(const TransportCoefficients& c);
+
+/// True where the longitudinal modes grow at every wavelength (longitudinal_mode_rate > 0 for
+/// all k), so no k∥ exists: the determinant of the longitudinal matrix never vanishes (the heat
+/// flux coefficient μ* outweighs κ*, at strong dissipation: ε ≲ 0.32 for disks and ε ≲ 0.16 for
+/// spheres at n = 0.05). There
+/// the first-Sonine Navier–Stokes description itself breaks down.
+bool heat_mode_unstable_at_every_wavelength(const TransportCoefficients& c);
 
 /// L_c = 2π/k⊥ in σ (+inf for elastic collisions): a periodic box of side L > L_c has an
 /// unstable shear mode.
