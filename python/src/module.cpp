@@ -5,10 +5,12 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
@@ -232,8 +234,23 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
                               " is outside the allowed range [0, inf)");
       continue;
     }
+    if (name == "checkpoint_wall") {  // the CLI's --checkpoint-wall
+      checkpoints.wall_interval = keyword_as<double>(name, v);
+      if (!(checkpoints.wall_interval >= 0 && std::isfinite(checkpoints.wall_interval)))
+        throw py::value_error("checkpoint_wall: value " + repr_text(v) +
+                              " is outside the allowed range [0, inf)");
+      continue;
+    }
     if (name == "restart") {
       checkpoints.restart = path_keyword(name, v);
+      // A missing file is FileNotFoundError, as Python's own open() says it.
+      std::error_code ec;
+      if (!std::filesystem::exists(checkpoints.restart, ec)) {
+        PyErr_SetObject(
+            PyExc_FileNotFoundError,
+            py::make_tuple(ENOENT, "restart: no checkpoint file", checkpoints.restart).ptr());
+        throw py::error_already_set();
+      }
       continue;
     }
     const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
@@ -261,6 +278,8 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     sim::default_relaxation_for_method(p);
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
+  if (checkpoints.path.empty() && checkpoints.wall_interval > 0)
+    throw py::value_error("checkpoint_wall: needs checkpoint=FILE");
   if (!checkpoints.path.empty()) require_writable_file("checkpoint", checkpoints.path);
   try {
     sim::validate(p);
@@ -488,8 +507,10 @@ std::string simulate_doc() {
       "  (relax_collisions_per_particle defaults to 0 for method = 'dsmc', which relaxes nothing)\n"
       "\nCheckpoints (event-driven method only):\n"
       "  checkpoint = FILE (str or os.PathLike), checkpoint_interval = DT (simulated time between\n"
-      "      checkpoints, >= 0): writes the run's whole state;\n"
-      "  restart = FILE: continues a checkpoint; the result equals the uninterrupted run's.\n"
+      "      checkpoints, >= 0), checkpoint_wall = S (wall-clock seconds between checkpoints,\n"
+      "      >= 0): writes the run's whole state;\n"
+      "  restart = FILE: continues a checkpoint (FileNotFoundError if there is none); the result\n"
+      "      equals the uninterrupted run's.\n"
       "\nCtrl-C stops the run at its next sample time or progress pause (at most 2^20 events, in\n"
       "the relaxation too) and raises KeyboardInterrupt; with checkpoint = FILE the run's state\n"
       "at that point is written there first (none during the relaxation, before t = 0). The\n"

@@ -264,15 +264,32 @@ def test_simulate_refuses_a_checkpoint_path_that_is_no_regular_file(tmp_path, ki
     assert (after.st_ino, after.st_mode) == (before.st_ino, before.st_mode)
 
 
-@pytest.mark.parametrize("make", [lambda path: path.mkdir(), lambda path: None],
-                         ids=["directory", "missing"])
-def test_simulate_names_restart_for_a_checkpoint_it_cannot_read(tmp_path, make):
+def test_simulate_names_restart_for_a_checkpoint_it_cannot_read(tmp_path):
     # Was: "checkpoint ...: not a file", which reads as if the checkpoint keyword were meant.
     path = tmp_path / "run.ckpt"
-    make(path)
+    path.mkdir()
     with pytest.raises(ValueError, match=rf"^restart: checkpoint {re.escape(str(path))}: "
                                          r"not a file"):
         molchaos.simulate(**SMALL, restart=path)
+
+
+def test_simulate_restart_of_a_missing_file_is_file_not_found(tmp_path):
+    # Was: ValueError, where Python's own open() raises FileNotFoundError.
+    path = tmp_path / "missing.ckpt"
+    with pytest.raises(FileNotFoundError) as raised:
+        molchaos.simulate(**SMALL, restart=path)
+    assert raised.value.filename == str(path) and "restart" in str(raised.value)
+
+
+def test_simulate_takes_the_wall_clock_checkpoint_interval(tmp_path):
+    # Was: TypeError (an unknown keyword), though the CLI has --checkpoint-wall.
+    ckpt = tmp_path / "run.ckpt"
+    run = molchaos.simulate(**SMALL, checkpoint=ckpt, checkpoint_wall=0.0)
+    assert run["stop_reason"] == "t_end"
+    with pytest.raises(ValueError, match="checkpoint_wall: needs checkpoint=FILE"):
+        molchaos.simulate(**SMALL, checkpoint_wall=1.0)
+    with pytest.raises(ValueError, match=r"checkpoint_wall: value -1.0 is outside .*\[0, inf\)"):
+        molchaos.simulate(**SMALL, checkpoint=ckpt, checkpoint_wall=-1.0)
 
 
 def test_simulate_names_dim_or_dimension_as_given():
