@@ -310,6 +310,19 @@ void add_config_option(CLI::App* cmd, std::string& path) {
       ->configurable(false);
 }
 
+namespace {
+// Options whose value came from a --config file (no flag given for them), by long name.
+std::map<std::string, std::string>& values_from_files() {
+  static std::map<std::string, std::string> set;
+  return set;
+}
+}  // namespace
+
+std::string config_file_that_set(const std::string& flag) {
+  const auto it = values_from_files().find(flag);
+  return it == values_from_files().end() ? std::string() : it->second;
+}
+
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
   const auto [items, result_file] = read_config_file(path);
@@ -364,6 +377,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       op->clear();
       op->add_result(given);
       op->run_callback();
+    } else {
+      values_from_files()[op->get_name()] = path;
     }
   }
 }

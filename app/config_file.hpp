@@ -45,6 +45,11 @@ void add_config_option(CLI::App* cmd, std::string& path);
 /// option's check failing (with its allowed range).
 void apply_config_file(CLI::App* cmd, const std::string& path);
 
+/// The --config file that gave the option `flag` (its long name, "--relax") its value, where no
+/// flag on the command line gave one; empty otherwise. main() names it beside a refusal of that
+/// value, which the user may not have typed (a result file's relaxation, read for another method).
+std::string config_file_that_set(const std::string& flag);
+
 /// cmd's callback: reads --config FILE (added here) into the options not given as flags, then
 /// runs `action`.
 template <class Action>

@@ -8,6 +8,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/version.hpp"
 #include "repeated_options.hpp"
@@ -75,7 +76,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "molchaos: %s\n", e.what());
     return molchaos::app::k_exit_interrupted;
   } catch (const molchaos::app::UsageError& e) {
-    std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
+    // A refused value the user did not type names the file it came from.
+    const std::string what = e.what();
+    const std::string file = molchaos::app::config_file_that_set(what.substr(0, what.find(": ")));
+    std::fprintf(stderr, "molchaos: error: %s%s\n", one_line(what).c_str(),
+                 file.empty() ? "" : (" (the value is from --config " + file + ")").c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "molchaos: failed: %s (or fewer threads, in a sweep)\n",

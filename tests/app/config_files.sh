@@ -119,6 +119,11 @@ refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is ou
 # A flag on the command line wins, but the file's value for it is checked all the same.
 refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is outside the allowed range" \
   simulate --config range.toml --restitution 0.9
+# A refused value that came from the file (here a result file's relaxation, read for another
+# method) names the file: the user did not type it.
+"$bin" simulate --particles 100 --t-end 1 --out plain.csv --quiet 2>/dev/null || fail "plain run"
+refused "--relax: value 20 is not allowed with method = dsmc.*\(the value is from --config plain.csv\)" \
+  simulate --config plain.csv --method dsmc
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
