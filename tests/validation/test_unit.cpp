@@ -374,29 +374,41 @@ BOOST_AUTO_TEST_CASE(an_elastic_run_without_collisions_measures_no_frequency) {
              std::string::npos);
 }
 
+// Two summary points at density 0.05, mode none, restitutions 0.9 and 1, of `runs` runs each,
+// and the data rows of their summary CSV as write_summary_csv writes them.
+struct SummaryPair {
+  EnsembleSpec spec;
+  std::vector<PointResult> points{2};
+  explicit SummaryPair(int runs) {
+    spec.restitutions = {0.9, 1.0};
+    spec.seeds = runs;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      points[i].summary.density = 0.05;
+      points[i].summary.restitution = spec.restitutions[i];
+      points[i].summary.mode = "none";
+      points[i].summary.runs = runs;
+    }
+  }
+  std::vector<std::string> rows() const {
+    const auto path = std::filesystem::temp_directory_path() /
+                      ("molchaos_summary_" + std::to_string(::getpid()) + ".csv");
+    write_summary_csv(spec, points, "test", path.string());
+    std::ifstream in(path);
+    std::vector<std::string> found;
+    for (std::string line; std::getline(in, line);)
+      if (line.starts_with("0.05,")) found.push_back(line);
+    std::filesystem::remove(path);
+    return found;
+  }
+};
+
 // The summary CSV of a point with one run: the values, but no standard errors (nan, not 0).
 BOOST_AUTO_TEST_CASE(summary_of_one_run_has_no_error_bars) {
-  EnsembleSpec spec;
-  spec.restitutions = {0.9, 1.0};
-  spec.seeds = 1;
-  std::vector<PointResult> points(2);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    points[i].summary.density = 0.05;
-    points[i].summary.restitution = spec.restitutions[i];
-    points[i].summary.mode = "none";
-    points[i].summary.runs = 1;
-  }
-  points[0].summary.A = {20.5, 0.0};
-  points[0].A_theory = {21.3, 2.5e-14};
-  points[1].collision_ratio = {1.01, 0.0};
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("molchaos_summary_" + std::to_string(::getpid()) + ".csv");
-  write_summary_csv(spec, points, "test", path.string());
-  std::ifstream in(path);
-  std::vector<std::string> rows;
-  for (std::string line; std::getline(in, line);)
-    if (line.starts_with("0.05,")) rows.push_back(line);
-  std::filesystem::remove(path);
+  SummaryPair s(1);
+  s.points[0].summary.A = {20.5, 0.0};
+  s.points[0].A_theory = {21.3, 2.5e-14};
+  s.points[1].collision_ratio = {1.01, 0.0};
+  const auto rows = s.rows();
   BOOST_TEST_REQUIRE(rows.size() == 2u);
   BOOST_TEST(rows[0].starts_with("0.05,0.9,edmd,none,20.5,nan,1,0,21.3,2.5e-14,0,nan,0,nan,"));
   BOOST_TEST(rows[1].ends_with(",1.01,nan"));
@@ -405,29 +417,13 @@ BOOST_AUTO_TEST_CASE(summary_of_one_run_has_no_error_bars) {
 // Columns that do not apply to a point are nan, not 0: A, A_theory, mean_dyad, a2 and the
 // breakdown time at eps = 1, collision_ratio at eps < 1, the breakdown time without a breakdown.
 BOOST_AUTO_TEST_CASE(summary_columns_that_do_not_apply_are_nan) {
-  EnsembleSpec spec;
-  spec.restitutions = {0.9, 1.0};
-  spec.seeds = 3;
-  std::vector<PointResult> points(2);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    points[i].summary.density = 0.05;
-    points[i].summary.restitution = spec.restitutions[i];
-    points[i].summary.mode = "none";
-    points[i].summary.runs = 3;
-  }
-  points[0].summary.A = {20.5, 0.1};
-  points[0].A_theory = {21.3, 2.5e-14};
-  points[0].summary.mean_dyad = {-0.5, 0.02};
-  points[0].summary.a2 = {0.01, 0.003};
-  points[1].collision_ratio = {1.01, 0.02};
-  const auto path = std::filesystem::temp_directory_path() /
-                    ("molchaos_summary_na_" + std::to_string(::getpid()) + ".csv");
-  write_summary_csv(spec, points, "test", path.string());
-  std::ifstream in(path);
-  std::vector<std::string> rows;
-  for (std::string line; std::getline(in, line);)
-    if (line.starts_with("0.05,")) rows.push_back(line);
-  std::filesystem::remove(path);
+  SummaryPair s(3);
+  s.points[0].summary.A = {20.5, 0.1};
+  s.points[0].A_theory = {21.3, 2.5e-14};
+  s.points[0].summary.mean_dyad = {-0.5, 0.02};
+  s.points[0].summary.a2 = {0.01, 0.003};
+  s.points[1].collision_ratio = {1.01, 0.02};
+  const auto rows = s.rows();
   BOOST_TEST_REQUIRE(rows.size() == 2u);
   BOOST_TEST(rows[0] ==
              "0.05,0.9,edmd,none,20.5,0.1,3,0,21.3,2.5e-14,-0.5,0.02,0.01,0.003,0,nan,"
