@@ -231,9 +231,10 @@ void run_reproduce(const ReproduceCliOptions& o) {
                                     validation::report_html(markdown, o.out));
   stop_if_interrupted("after writing the report (the output is complete)", sweep.cache_directory);
   std::cout << fmt::format(
-      "wrote {}/REPORT.md, {}/REPORT.html, {}/fig4_A_of_eps.csv, {}/a2_of_eps.csv and {} figures "
-      "in {:.0f} s\n",
-      o.out, o.out, o.out, o.out, figure_files.size(), results.seconds);
+      "wrote {}/REPORT.md, {}/REPORT.html, the tables behind them ({}/*.csv) "
+      "and {} figures in {:.0f} s{}\n",
+      o.out, o.out, o.out, figure_files.size(), results.seconds,
+      o.quick ? " (a quick look: --quick)" : "");
   std::cout << fmt::format(
       "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
       results.claims.size(), validation::count_not_reproduced(results));

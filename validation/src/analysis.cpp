@@ -141,6 +141,9 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
   s.mean_dyad = mean_and_standard_error(dyad);
   s.a2 = mean_and_standard_error(a2);
   s.breakdown_time = mean_and_standard_error(tb);
+  std::vector<double> ln_tb;
+  for (double t : tb) ln_tb.push_back(std::log(t));
+  s.log_breakdown_time = mean_and_standard_error(ln_tb);
   if (s.runs == 0) {  // nothing measured: not a value of 0 (tables print nan, runs = 0)
     const double nan = std::numeric_limits<double>::quiet_NaN();
     s.A = s.mean_dyad = s.a2 = Measurement{nan, nan};

@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -89,6 +90,14 @@ std::vector<RunKind> run_kinds(const EnsembleSpec& spec) {
   return kinds;
 }
 
+namespace {
+// A DSMC seed of its own for each density (expand): from the density's bits, so that a density
+// gets the same seeds whichever other densities a sweep lists (and its cache entries stay valid).
+std::uint64_t dsmc_seed(std::uint64_t base_seed, double density, std::uint64_t index) {
+  return derive_seed(derive_seed(base_seed, std::bit_cast<std::uint64_t>(density)), index);
+}
+}  // namespace
+
 std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
   std::vector<sim::Parameters> runs;
   for (double n : s.densities)
@@ -105,7 +114,9 @@ std::vector<sim::Parameters> expand(const EnsembleSpec& s) {
           p.density = n;
           p.restitution = eps;
           p.randomize = kind.mode;
-          p.seed = derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
+          p.seed = kind.method == sim::Method::dsmc
+                       ? dsmc_seed(s.base_seed, n, static_cast<std::uint64_t>(i))
+                       : derive_seed(s.base_seed, static_cast<std::uint64_t>(i));
           p.t_end = t_end;
           p.samples_per_decade = s.samples_per_decade;
           p.contact_statistics = s.contact_statistics;

@@ -300,7 +300,7 @@ void figure_fig3(ReproduceResults& R) {
                                                   gases[i].label + ", own fitted τ0"));
   }
   if (R.fig3_original.summary.breakdowns > 0)
-    R.fig3.clustering_onset = R.fig3_original.summary.breakdown_time.value;
+    R.fig3.clustering_onset = std::exp(R.fig3_original.summary.log_breakdown_time.value);
 }
 
 namespace {

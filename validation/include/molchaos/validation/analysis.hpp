@@ -54,6 +54,9 @@ struct PointSummary {
   Measurement a2;
   int breakdowns = 0;  ///< runs in which the break-down was detected
   Measurement breakdown_time;
+  /// ln t_b over the runs that broke down, mean ± standard error (the onset on the log axis of
+  /// Fig. 3; ln of the mean t_b would sit above it, t_b being skewed).
+  Measurement log_breakdown_time;
   std::vector<std::pair<std::uint64_t, double>> A_by_seed;  ///< (seed, A) of each fitted run
   /// A of each fitted run by every estimator, in the order of k_haff_estimators (the
   /// estimator study compares their scatter on the same runs).

@@ -63,7 +63,10 @@ double theory_tau0(int dimension, double density, double restitution);
 
 /// All runs, ordered by density, restitution, run kind (run_kinds), seed index. Seed index i uses
 /// derive_seed(base_seed, i) at every state point, method and mode (common random numbers: the
-/// modes and restitutions at one density start from the same relaxed configurations).
+/// modes and restitutions at one density start from the same relaxed configurations), except
+/// that DSMC runs take seeds of their density (dsmc_seed): DSMC keeps velocities only and the
+/// density enters through ω_E alone, so one seed at two densities would be one realisation on
+/// two time scales (their A/A_theory correlated at 0.999), counted twice by every χ².
 std::vector<sim::Parameters> expand(const EnsembleSpec& spec);
 
 /// The relaxation of a spec whose relax_collisions_per_particle was not given, by the rule of
