@@ -309,8 +309,13 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
   if (micro_run_ >= k_collapse_collisions) request_stop(StopReason::collapse);
   if (collision_limit_ != 0 && collisions_ >= collision_limit_)
     request_stop(StopReason::max_collisions);
-  if (min_temperature_ > 0 && sum_u2_ * (1.0 / (clock_.theta * clock_.theta)) < min_temperature_ * n_ * D)
-    request_stop(StopReason::min_temperature);
+  // The floor of double precision is checked here too, not only at a rescaling: those come when
+  // the internal T has fallen 16-fold, so the physical T could fall 16 times below the floor
+  // before the run noticed (a maximum and a product per collision).
+  const double stop_temperature = std::max(min_temperature_, k_temperature_floor);
+  if (sum_u2_ * (1.0 / (clock_.theta * clock_.theta)) < stop_temperature * n_ * D)
+    request_stop(min_temperature_ >= k_temperature_floor ? StopReason::min_temperature
+                                                         : StopReason::temperature_floor);
 }
 
 template <int D, class Observer>
