@@ -112,13 +112,15 @@ std::string hydrodynamics_text(int dimension, double restitution, double density
                      2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
   if (!(m.rate > 0)) {  // a box below L_c: the mode decays, the gas stays homogeneous
     s += fmt::format(
-        "  N = {}: box {:.6g} σ, below L_c: the largest shear mode decays at {:.6g} per "
-        "collision, and S⊥ never reaches {:g}\n",
+        "  N = {}: box {:.6g} σ, below L_c: the largest shear mode's amplitude decays at {:.6g} "
+        "per collision per particle, and S⊥ never reaches {:g}\n",
         h.particles, m.box, -m.rate, h.growth);
     return s;
   }
-  s += fmt::format("  N = {}: box {:.6g} σ, largest shear mode grows at {:.6g} per collision\n",
-                   h.particles, m.box, m.rate);
+  s += fmt::format(
+      "  N = {}: box {:.6g} σ, the largest shear mode's amplitude grows at {:.6g} per collision "
+      "per particle (its energy S⊥ at twice that, once the decaying modes have died out)\n",
+      h.particles, m.box, m.rate);
   s += fmt::format(
       "  its S⊥ reaches {:g} after {:.6g} collisions per particle, t = {} "
       "(ln t = {:.4g}) on Haff's law\n",

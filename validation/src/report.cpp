@@ -302,8 +302,17 @@ std::string fig3_table(const ReproduceResults& r) {
     const auto& t = r.fig3.curves.front().t;
     for (std::size_t i = 0; i < t.size(); i += 4) {
       s += fmt::format("| {:.3f} |", std::log(t[i]));
-      for (const auto& curve : r.fig3.curves)
-        s += i < curve.T.size() ? fmt::format(" {:.6g} |", curve.T[i]) : " – |";
+      for (const auto& curve : r.fig3.curves) {
+        if (i >= curve.T.size()) {
+          s += " – |";
+          continue;
+        }
+        // The simulated gases with their standard error over runs (the bands of the figure);
+        // Haff's-law lines and single runs without one.
+        const double error = i < curve.T_error.size() ? curve.T_error[i] : 0.0;
+        s += error > 0.0 ? fmt::format(" {:.6g} ± {:.2g} |", curve.T[i], error)
+                         : fmt::format(" {:.6g} |", curve.T[i]);
+      }
       s += "\n";
     }
   }

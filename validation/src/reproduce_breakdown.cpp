@@ -84,7 +84,9 @@ Claim claim_shuffles_suppress_vortices(const ReproduceResults& R) {
 Claim claim_randomized_stays_homogeneous(const ReproduceResults& R) {
   const auto& s = R.gas_fields;
   Claim c{ClaimSource::paper,
-          "the randomized gas stays spatially homogeneous (the paper: no difference observed)",
+          "the randomized gas stays spatially homogeneous (the paper: no difference in "
+          "homogeneity from the original gas while Haff's law applies; tested here over the "
+          "break-down study's window, where the original gas does break down)",
           s.series.empty() ? "not run" : "reproduced",
           s.series.empty() ? "the study runs at paper scale only" : "",
           {}};

@@ -107,12 +107,17 @@ Claim claim_prefactors(const ReproduceResults&) {
                         "-", "-", p.note});
       continue;
     }
+    // The prefactors are exact rationals of the derivation (their error is the rounding of the
+    // computed value, or a quadrature's for μ2(0,0)): "within 3 errors" means "equal".
     const Agreement a = agreement(computed, Measurement{*p.paper, 0.0});
     c.rows.push_back({p.quantity + " (d = 2)", computed, std::nullopt, p.paper, std::nullopt,
-                      a.agrees ? "reproduced" : "contradicted", "agrees within 3 quadrature errors",
+                      a.agrees ? "reproduced" : "contradicted",
+                      "equal to the paper's value within 3 errors of the computed one (exact "
+                      "forms: their rounding)",
                       p.note});
     if (!a.agrees)
-      differing.push_back(fmt::format("{:g} where the paper prints {:.6g}", p.computed, *p.paper));
+      differing.push_back(
+          fmt::format("{}: {:g} where the paper prints {:.6g}", p.quantity, p.computed, *p.paper));
   }
   c.verdict = differing.empty() ? "reproduced" : "contradicted";
   c.deciding = fmt::format("{} of {} differ: computed {}", differing.size(), c.rows.size(),
@@ -194,7 +199,9 @@ std::string haff_deciding(const HaffComparison& h) {
 Claim claim_randomized_follows_haff(const ReproduceResults& R) {
   HaffComparison h = compare_with_haff(R, "paper");
   Claim c{ClaimSource::paper,
-          "the randomized gas (paper's shuffle) cools by Haff's law with kinetic theory's τ0",
+          "the randomized gas (paper's shuffle) cools by Haff's law (the paper fits τ0; tested "
+          "here with kinetic theory's τ0, which the molecular chaos the shuffle is to restore "
+          "implies)",
           h.test.holds() ? "reproduced" : "not reproduced", haff_deciding(h), std::move(h.rows)};
   return c;
 }
