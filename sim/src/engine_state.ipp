@@ -144,14 +144,15 @@ void Engine<D, Observer>::check_run_length(double t_end) const {
   const double per_particle = cooling > 0
                                   ? collision_frequency_ * tau0 * std::log1p(t_end / tau0)
                                   : collision_frequency_ * t_end;
-  const double capped = collision_limit_ > 0
-                            ? std::min(per_particle, 2.0 * static_cast<double>(collision_limit_) / n_)
-                            : per_particle;
+  const double limit_per_particle = 2.0 * static_cast<double>(collision_limit_) / n_;
+  const double capped =
+      collision_limit_ > 0 ? std::min(per_particle, limit_per_particle) : per_particle;
   const double expected_events = capped * n_ / 2.0 * events_per_collision_;
   if (!(expected_events > k_max_relaxation_events)) return;
   const double most_per_particle = k_max_relaxation_events / events_per_collision_ * 2.0 / n_;
-  const double most = cooling > 0 ? tau0 * std::expm1(most_per_particle / (collision_frequency_ * tau0))
-                                  : most_per_particle / collision_frequency_;
+  const double most = cooling > 0
+                          ? tau0 * std::expm1(most_per_particle / (collision_frequency_ * tau0))
+                          : most_per_particle / collision_frequency_;
   char text[160];
   std::snprintf(text, sizeof text,
                 " would take about %.2g events at this density (%.2g per collision, most of them "

@@ -252,12 +252,12 @@ std::string linear_hydrodynamics_csv(const ReproduceResults& R) {
       const bool both = std::isfinite(b.measured) && std::isfinite(b.predicted);
       out += fmt::format(
           "{},{},{:.6g},{},{},{},{},{}\n", b.dimension, csv_field(b.quantity), b.predicted,
-          std::isfinite(b.measured) ? fmt::format("{:.6g}", b.measured) : "",
-          std::isfinite(b.measured_error) ? fmt::format("{:.3g}", b.measured_error) : "",
-          both ? fmt::format("{:.3g}", 100 * (b.measured / b.predicted - 1)) : "",
+          std::isfinite(b.measured) ? fmt::format("{:.6g}", b.measured) : "nan",
+          std::isfinite(b.measured_error) ? fmt::format("{:.3g}", b.measured_error) : "nan",
+          both ? fmt::format("{:.3g}", 100 * (b.measured / b.predicted - 1)) : "nan",
           both && b.measured_error > 0
               ? fmt::format("{:.3g}", (b.measured - b.predicted) / b.measured_error)
-              : "",
+              : "nan",
           csv_field(b.note));
     }
   return out;
@@ -278,14 +278,16 @@ std::string structure_factor_curves_csv(const ReproduceResults& R) {
 }  // namespace
 
 void write_breakdown_tables(const ReproduceResults& R, const std::string& directory) {
+  // Every table names the version that wrote it, after its title line, as the other tables do.
+  const auto write = [&](const std::string& name, std::string csv) {
+    csv.insert(csv.find('\n') + 1, "# version = " + R.version + "\n");
+    write_file_atomically(directory + "/" + name, csv);
+  };
   if (!R.breakdown.empty()) {
-    write_file_atomically(directory + "/breakdown_linear_hydrodynamics.csv",
-                          linear_hydrodynamics_csv(R));
-    write_file_atomically(directory + "/breakdown_structure_factors.csv",
-                          structure_factor_curves_csv(R));
+    write("breakdown_linear_hydrodynamics.csv", linear_hydrodynamics_csv(R));
+    write("breakdown_structure_factors.csv", structure_factor_curves_csv(R));
   }
-  if (!R.gas_fields.series.empty())
-    write_file_atomically(directory + "/breakdown_gases.csv", gas_field_csv(R.gas_fields));
+  if (!R.gas_fields.series.empty()) write("breakdown_gases.csv", gas_field_csv(R.gas_fields));
   if (!R.flow_energy.empty()) {
     const FlowEnergySpec spec;
     std::string csv = fmt::format(
@@ -297,7 +299,7 @@ void write_breakdown_tables(const ReproduceResults& R, const std::string& direct
     for (const auto& p : R.flow_energy)
       csv += fmt::format("{},{},{:.6g},{:.3g}\n", p.density, p.restitution, p.flow_fraction.value,
                          p.flow_fraction.error);
-    write_file_atomically(directory + "/flow_energy_share.csv", csv);
+    write("flow_energy_share.csv", csv);
   }
 }
 

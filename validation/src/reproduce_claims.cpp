@@ -116,12 +116,12 @@ Claim claim_prefactors(const ReproduceResults&) {
                       "forms: their rounding)",
                       p.note});
     if (!a.agrees)
-      differing.push_back(
-          fmt::format("{}: {:g} where the paper prints {:.6g}", p.quantity, p.computed, *p.paper));
+      differing.push_back(fmt::format("{}: computed {:g} where the paper prints {:.6g}", p.quantity,
+                                      p.computed, *p.paper));
   }
   c.verdict = differing.empty() ? "reproduced" : "contradicted";
-  c.deciding = fmt::format("{} of {} differ: computed {}", differing.size(), c.rows.size(),
-                           fmt::join(differing, ", "));
+  c.deciding = fmt::format("{} of {} differ: {}", differing.size(), c.rows.size(),
+                           fmt::join(differing, "; "));
   return c;
 }
 
