@@ -77,7 +77,7 @@ inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_clos
         if (x == 0 && text.substr(0, text.find_first_of("eEpP")).find_first_of("123456789") !=
                           std::string::npos)
           return "value " + text +
-                 " is below the smallest positive double (4.9e-324) and would "
+                 " is nearer 0 than the smallest double (4.9e-324) and would "
                  "read as 0; allowed range " +
                  range;
         const bool ok_lo = lo_closed ? x >= lo : x > lo;

@@ -211,6 +211,21 @@ void run_simulate(const SimulateOptions& options) {
     files.emplace_back("--restart", checkpoints.restart);
     require_distinct_files(files);
   }
+  {
+    // A snapshot file this run would write that another run wrote (its parameter lines are not
+    // those of the CSV this run replaces: an --out differing only in its extension, run.txt
+    // beside run.csv, names the same snapshots) would be overwritten, and that run's set mixed.
+    const std::vector<std::string> replaced = parameter_lines(options.out);
+    for (std::size_t k = 0; k < p.snapshot_times.size(); ++k) {
+      const std::string path = snapshot_path(options.out, k);
+      const std::vector<std::string> lines = parameter_lines(path);
+      if (!lines.empty() && lines != replaced)
+        throw UsageError("--out", path + " holds a snapshot of another run (not of the run in " +
+                                      options.out +
+                                      "), which this run would overwrite: choose "
+                                      "another --out, or remove that file");
+    }
+  }
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
     throw UsageError(checkpoints.interval > 0 ? "--checkpoint-interval" : "--checkpoint-wall",
                      "needs --checkpoint FILE");

@@ -281,7 +281,7 @@ ConfigFile read_config_file(const std::string& path) {
   if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
   // An empty file sets nothing: the defaults would run in place of the run the file was meant
   // to repeat (an extended XYZ file of a run that reached none of its snapshot times is empty).
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+  if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
   switch (kind_of(text)) {
@@ -296,7 +296,12 @@ ConfigFile read_config_file(const std::string& path) {
       if (cut)
         throw UsageError("--config", path + ": longer than 16 MiB and not a result file; a file "
                                             "of options is a few lines of key = value");
-      return {read_toml(lines, path), false};
+      {
+        ConfigItems items = read_toml(lines, path);
+        // Comments alone set nothing either: the defaults would run in place of the meant run.
+        if (items.empty()) throw UsageError("--config", path + ": no settings (comments only)");
+        return {std::move(items), false};
+      }
   }
   return {};
 }

@@ -32,7 +32,7 @@ void reject_threads_on_ranks(bool threads_given) {
   if (threads_given && sweeps_run_on_ranks())
     throw UsageError("--threads",
                      "does not apply under mpirun with more than one rank (each rank computes one "
-                     "run at a time): leave it out, or start more ranks");
+                     "run at a time, so the ranks are the parallelism): leave it out");
 }
 
 }  // namespace molchaos::app

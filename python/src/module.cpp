@@ -243,14 +243,6 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     }
     if (name == "restart") {
       checkpoints.restart = path_keyword(name, v);
-      // A missing file is FileNotFoundError, as Python's own open() says it.
-      std::error_code ec;
-      if (!std::filesystem::exists(checkpoints.restart, ec)) {
-        PyErr_SetObject(
-            PyExc_FileNotFoundError,
-            py::make_tuple(ENOENT, "restart: no checkpoint file", checkpoints.restart).ptr());
-        throw py::error_already_set();
-      }
       continue;
     }
     const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
@@ -290,6 +282,15 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
       if (const std::string field = std::string(info->name) + ":"; message.starts_with(field))
         message.replace(0, field.size() - 1, keyword);
     throw py::value_error(message);
+  }
+  // A missing checkpoint is FileNotFoundError, as Python's own open() says it; after the
+  // parameters, whose refusal names the keyword as the command line names the flag.
+  std::error_code ec;
+  if (!checkpoints.restart.empty() && !std::filesystem::exists(checkpoints.restart, ec)) {
+    PyErr_SetObject(
+        PyExc_FileNotFoundError,
+        py::make_tuple(ENOENT, "restart: no checkpoint file", checkpoints.restart).ptr());
+    throw py::error_already_set();
   }
   return p;
 }

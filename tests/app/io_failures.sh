@@ -111,6 +111,12 @@ grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && 
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 0.5,1 --quiet --out ext.csv 2>/dev/null || fail "simulate ext.csv"
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out ext.txt 2>/dev/null || fail "simulate ext.txt"
 [ -f ext.snapshot0.csv ] && [ -f ext.snapshot1.csv ] || fail "a run of --out ext.txt removed the snapshots of ext.csv"
+# ... nor overwrites them: a run with snapshots of its own there is refused before it runs.
+"$bin" simulate --particles 100 --t-end 2 --relax 1 --seed 7 --snapshot-times 0.5 --quiet --out ext.txt \
+  2>ext.err && fail "a run of --out ext.txt overwrote the snapshot of ext.csv"
+grep -q -- "--out: ext.snapshot0.csv holds a snapshot of another run" ext.err ||
+  fail "no refusal naming the other run's snapshot: $(cat ext.err)"
+grep -qx '# seed = 1' ext.snapshot0.csv || fail "ext.csv's snapshot was changed"
 # A run stopped before its first snapshot time keeps its outputs; the table has no rows, and says so.
 "$bin" simulate --particles 200 --t-end 50 --restitution 0.7 --relax 1 --max-collisions 10 --snapshot-times 40 \
   --pair-correlations early_g.csv --xyz early.xyz --quiet --out early.csv 2>early.err || fail "a run stopped early failed: $(cat early.err)"
@@ -155,7 +161,7 @@ if mount_small_tmpfs small 64k; then
   if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
     # The H5MD trajectory on a full disk: exit 1 naming it, no crash at exit (HDF5 wrote its
     # file itself, and a file it could not close crashed its clean-up), nothing left behind.
-    "$bin" simulate --particles 6000 --t-end 1 --relax 1 --snapshot-times 0,1 --quiet --out run.csv \
+    "$bin" simulate --particles 6000 --t-end 1 --relax 1 --snapshot-times 0,1 --quiet --out h5run.csv \
       --trajectory small/run.h5 > /dev/null 2> err.txt
     s=$?
     [ "$s" -eq 1 ] || fail "full disk (H5MD) gave status $s: $(tail -n 2 err.txt)"

@@ -279,6 +279,9 @@ def test_simulate_restart_of_a_missing_file_is_file_not_found(tmp_path):
     with pytest.raises(FileNotFoundError) as raised:
         molchaos.simulate(**SMALL, restart=path)
     assert raised.value.filename == str(path) and "restart" in str(raised.value)
+    # A bad parameter beside it is named first, as the command line names the flag.
+    with pytest.raises(ValueError, match="^particles: "):
+        molchaos.simulate(**dict(SMALL, particles=-5), restart=path)
 
 
 def test_simulate_takes_the_wall_clock_checkpoint_interval(tmp_path):
