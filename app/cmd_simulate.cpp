@@ -43,6 +43,11 @@ struct SimulateOptions {
   bool quiet = false;
   std::string write_config;  // TOML file of the parameters (empty: none)
   sim::CheckpointOptions checkpoints;
+
+  /// Every file the run writes (empty names: not asked for): its outputs and its checkpoint.
+  std::vector<std::string> written_files() const {
+    return {out, write_config, pair_correlations, trajectory, xyz, checkpoints.path};
+  }
 };
 
 // SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end;
@@ -121,10 +126,11 @@ std::vector<std::string> parameter_lines(const std::string& path) {
 void remove_earlier_snapshots(const SimulateOptions& o, std::size_t from,
                               const std::vector<std::string>& replaced) {
   if (replaced.empty()) return;
-  const auto own = [&o](const std::string& path) {
+  std::vector<std::string> own_files = o.written_files();
+  own_files.push_back(o.checkpoints.restart);
+  const auto own = [&own_files](const std::string& path) {
     std::error_code ec;
-    for (const std::string& f : {o.out, o.write_config, o.pair_correlations, o.trajectory, o.xyz,
-                                 o.checkpoints.path, o.checkpoints.restart})
+    for (const std::string& f : own_files)
       if (!f.empty() && std::filesystem::equivalent(path, f, ec)) return true;
     return false;
   };
@@ -155,8 +161,7 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
     const sigset_t* mask;
     ~Unblock() { pthread_sigmask(SIG_SETMASK, mask, nullptr); }
   } unblock{&before};
-  for (const std::string& path : {options.out, options.write_config, options.pair_correlations,
-                                  options.trajectory, options.xyz, options.checkpoints.path})
+  for (const std::string& path : options.written_files())
     if (!path.empty()) {
       const std::string directory = std::filesystem::path(path).parent_path().string();
       sim::remove_stale_temporaries(directory.empty() ? "." : directory);
