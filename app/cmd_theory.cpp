@@ -343,11 +343,7 @@ void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
   std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n", p.enskog_collision_frequency);
   // The end to six digits, cut rather than rounded (rounded, 0.666666666666631 read 0.666667, a
   // b the range refuses); the full end is in --json and in the message refusing a b.
-  const double upper = r.b_range.upper;
-  const double scale =
-      std::isfinite(upper) && upper > 0 ? std::pow(10.0, 5 - std::floor(std::log10(upper))) : 1.0;
-  std::cout << fmt::format("  allowed b            [{:.6g}, {})\n\n", r.b_range.lower,
-                           general(std::floor(upper * scale) / scale, r.b_range.upper_error, 6));
+  std::cout << fmt::format("  allowed b            {}\n\n", theory::range_text(r.b_range, 6));
 }
 
 void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {

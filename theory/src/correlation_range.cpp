@@ -77,13 +77,18 @@ CorrelationRange correlation_b_range(const ExpansionTable& mu2, double a2,
   return range;
 }
 
-std::string range_text(const CorrelationRange& r) {
+std::string range_text(const CorrelationRange& r, int significant_digits) {
   std::string upper = exact_text(r.upper);
-  if (r.upper_error > 0.0 && std::isfinite(r.upper)) {
+  const bool shortened = r.upper_error > 0.0 || significant_digits < 17;
+  if (shortened && std::isfinite(r.upper) && r.upper != 0.0) {
     // Decimals down to the second significant digit of the bound's uncertainty (the errors are
-    // printed with two), cut rather than rounded: every b below the printed end is accepted.
-    const int decimals =
-        std::clamp(1 - static_cast<int>(std::floor(std::log10(r.upper_error))), 0, 17);
+    // printed with two), at most significant_digits, cut rather than rounded: every b below the
+    // printed end is accepted.
+    int decimals =
+        significant_digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(r.upper))));
+    if (r.upper_error > 0.0)
+      decimals = std::min(decimals, 1 - static_cast<int>(std::floor(std::log10(r.upper_error))));
+    decimals = std::clamp(decimals, 0, 17);
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", decimals + 3, r.upper);
     upper.assign(text, std::strlen(text) - 3);

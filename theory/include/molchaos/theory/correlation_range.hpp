@@ -31,8 +31,9 @@ CorrelationRange correlation_b_range(int dimension, double a2, double dyad_facto
 CorrelationRange correlation_b_range(const ExpansionTable& mu2_table, double a2,
                                      const QuadratureOptions& options = {}, double a2_error = 0.0);
 
-/// "[lower, upper)" with `upper` to the digits its uncertainty supports (cut, not rounded up).
-std::string range_text(const CorrelationRange& range);
+/// "[lower, upper)" with `upper` to the digits its uncertainty supports, at most
+/// `significant_digits` (cut, not rounded up).
+std::string range_text(const CorrelationRange& range, int significant_digits = 17);
 
 /// Throws std::invalid_argument naming `correlation_b` and the range unless b lies in it.
 void require_correlation_b(const ExpansionTable& mu2_table, double a2, double b,
