@@ -17,11 +17,11 @@ Engine<D, Observer>::Engine(const Parameters& p)
                      box_ >= 3.0 * (1.0 + 2.0 * k_shell);  // 3 cells of the list cutoff
   shell_ = neighbour_lists_ ? k_shell : 0.0;
   const std::size_t n = static_cast<std::size_t>(n_);
-  assign_in_huge_pages(part_, n + 1, Particle{});
+  part_.assign(n + 1, Particle{});
   id_.resize(n);
   for (std::int32_t i = 0; i < n_; ++i) id_[i] = i;
-  assign_in_huge_pages(ev_, n, EventData{});
-  assign_in_huge_pages(last_collision_time_, n, -k_inf);
+  ev_.assign(n, EventData{});
+  last_collision_time_.assign(n, -k_inf);
   auto cell_width_for = [&](double occupancy) {
     return neighbour_lists_
                ? list_cutoff()
@@ -39,7 +39,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
                     k_cache_bytes;
   links_in_records_ = outgrows_cache_ ? !neighbour_lists_ && k_links_in_records<D, true>
                                       : links_in_records_in_cache;
-  if (!links_in_records_) assign_in_huge_pages(cell_links_, n + 1, n_);
+  if (!links_in_records_) cell_links_.assign(n + 1, n_);
   const double width_target = cell_width_for(outgrows_cache_ ? k_cell_occupancy_beyond_cache<D>
                                                              : k_cell_occupancy<D>);
   cells_per_side_ = static_cast<int>(std::floor(box_ / width_target));

@@ -32,7 +32,7 @@ class CellMembers {
   template <class Links>
   void reset(std::size_t cells, std::int32_t n, Links&& links) {
     end_ = n;
-    assign_in_huge_pages(head_, cells, n);
+    head_.assign(cells, n);
     links[n] = n;  // the end links to itself (gather())
   }
 
@@ -94,7 +94,7 @@ class CellMembers {
 
  private:
   std::int32_t end_ = 0;  // the link that ends a list: the particle count
-  std::vector<std::int32_t> head_;
+  HugePageVector<std::int32_t> head_;
 };
 
 }  // namespace molchaos::sim

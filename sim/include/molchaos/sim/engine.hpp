@@ -239,7 +239,7 @@ class Engine {
   };
   // One record more than particles: the end of the cells' lists, which links to itself
   // (CellMembers); particles() leaves it out.
-  std::vector<Particle> part_;
+  HugePageVector<Particle> part_;
   std::span<Particle> particles() { return {part_.data(), static_cast<std::size_t>(n_)}; }
   std::span<const Particle> particles() const {
     return {part_.data(), static_cast<std::size_t>(n_)};
@@ -257,14 +257,14 @@ class Engine {
     std::int32_t cross_axis = 0;
     std::int32_t cell = 0;  // the cell it is filed in (cells, or neighbour lists' centre cells)
   };
-  std::vector<EventData> ev_;
-  std::vector<double> last_collision_time_;  // tau of the particle's last collision
+  HugePageVector<EventData> ev_;
+  HugePageVector<double> last_collision_time_;  // tau of the particle's last collision
   // The cells' members, and scratch for a stencil's: room for every particle and one more.
   CellMembers members_;
   // The links of the cells' lists (CellMembers): in the particle records (dilute cells,
   // k_links_in_records in engine.cpp), else in an array of their own, n + 1.
   bool links_in_records_ = false;
-  std::vector<std::int32_t> cell_links_;
+  HugePageVector<std::int32_t> cell_links_;
   RecordLinks<Particle> record_links() { return {part_.data()}; }
   // f(links) with the cells' links where they lie: the one place that asks links_in_records_ at
   // run time (the event loop's gathers know it from their template arguments).

@@ -31,8 +31,8 @@ class EventCalendar {
     buckets_ = 64;
     while (buckets_ < buckets) buckets_ *= 2;
     mask_ = buckets_ - 1;
-    assign_in_huge_pages(e_, static_cast<std::size_t>(n), Entry{});
-    assign_in_huge_pages(head_, static_cast<std::size_t>(buckets_), std::int32_t{-1});
+    e_.assign(static_cast<std::size_t>(n), Entry{});
+    head_.assign(static_cast<std::size_t>(buckets_), std::int32_t{-1});
     occupied_.assign(static_cast<std::size_t>(buckets_ / 64), 0);
     overflow_ = -1;
     current_ = 0;
@@ -254,8 +254,8 @@ class EventCalendar {
     std::int32_t where = k_absent;      // bucket slot, or k_in_overflow / k_absent
     std::int32_t next = -1, prev = -1;  // in the bucket's or the overflow's list
   };
-  std::vector<Entry> e_;
-  std::vector<std::int32_t> head_;
+  HugePageVector<Entry> e_;
+  HugePageVector<std::int32_t> head_;
   std::vector<std::uint64_t> occupied_;  // bit s set: bucket slot s holds events
   std::int32_t overflow_ = -1;
 };

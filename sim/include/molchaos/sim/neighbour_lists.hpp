@@ -27,7 +27,7 @@ class NeighbourLists {
   void reset(std::int32_t n, int capacity) {
     n_ = n;
     if (capacity > 0) lines_ = (capacity + 1 + k_line_slots - 1) / k_line_slots;  // + the count
-    assign_in_huge_pages(lines_of_lists_, static_cast<std::size_t>(n) * lines_, Line{});
+    lines_of_lists_.assign(static_cast<std::size_t>(n) * lines_, Line{});
   }
 
   /// Slots of a list: its neighbours and the room after them (0 before the first reset).
@@ -124,8 +124,8 @@ class NeighbourLists {
   void grow() {
     const int old = lines_;
     lines_ = 2 * old;
-    std::vector<Line> grown;
-    assign_in_huge_pages(grown, static_cast<std::size_t>(n_) * lines_, Line{});
+    HugePageVector<Line> grown;
+    grown.assign(static_cast<std::size_t>(n_) * lines_, Line{});
     for (std::size_t i = 0; i < static_cast<std::size_t>(n_); ++i)
       std::copy_n(&lines_of_lists_[i * old], old, &grown[i * lines_]);
     lines_of_lists_.swap(grown);
@@ -133,7 +133,7 @@ class NeighbourLists {
 
   std::int32_t n_ = 0;
   int lines_ = 0;  // per list (0 before the first reset)
-  std::vector<Line> lines_of_lists_;
+  HugePageVector<Line> lines_of_lists_;
 };
 
 }  // namespace molchaos::sim
