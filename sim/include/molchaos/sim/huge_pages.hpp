@@ -36,10 +36,10 @@ struct HugePageAllocator {
     if (n > std::size_t(-1) / 2 / sizeof(T)) throw std::bad_array_new_length();
     const std::size_t bytes = n * sizeof(T);
     if (bytes < k_least_bytes) return std::allocator<T>{}.allocate(n);
-    const std::size_t pages = (bytes + k_huge_page - 1) / k_huge_page;
-    void* p = ::operator new(pages * k_huge_page, std::align_val_t{k_huge_page});
+    const std::size_t held = (bytes + k_huge_page - 1) / k_huge_page * k_huge_page;
+    void* p = ::operator new (held, std::align_val_t{k_huge_page});
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    madvise(p, pages * k_huge_page, MADV_HUGEPAGE);  // a hint: refused, the pages stay small
+    madvise(p, held, MADV_HUGEPAGE);  // a hint: refused, the pages stay small
 #endif
     return static_cast<T*>(p);
   }
@@ -47,7 +47,7 @@ struct HugePageAllocator {
     if (n * sizeof(T) < k_least_bytes)
       std::allocator<T>{}.deallocate(p, n);
     else
-      ::operator delete(p, std::align_val_t{k_huge_page});
+      ::operator delete (p, std::align_val_t{k_huge_page});
   }
   template <class U>
   bool operator==(const HugePageAllocator<U>&) const noexcept {
