@@ -64,12 +64,14 @@ KineticParts kinetic_parts(int d, double alpha, double phi, double chi, double a
                3.0 * std::pow(2.0, d - 3) / (d + 2) * phi * chi * (1.0 + alpha) * (1.0 + alpha) *
                    (2.0 * alpha - 1.0 + a2 * (1.0 + alpha))) /
               (k.nu_kappa - 2.0 * zeta);
-  // μ_k* = 2ζ*[(1 + φ∂_φ ln χ) κ_k* + (d−1) a2/(2dζ*)]/(2ν_κ* − 3ζ*): the dilute form of Brey
-  // et al. with the density derivative of the Enskog cooling rate (ζ ∝ nχ). Garzó–Dufty's
+  // μ_k* = 2ζ*[(1 + φ∂_φ ln χ) κ_k* + (d−1) a2/(dζ*)]/(2ν_κ* − 3ζ*): the dilute form of Brey
+  // et al., (d−1)c/(2dζ*) with c = 2a2, with the density derivative of the Enskog cooling rate
+  // (ζ ∝ nχ). The a2 term is the density-gradient source's projection on S(V)V, a2 where the
+  // temperature gradient's is 1 + 2a2 (κ_k* above), both over (d−1)/d. Garzó–Dufty's
   // further O(φ(1−α)) collisional terms of μ_k are left out: they vanish as φ → 0
   // and, with μ itself, as α → 1; μ enters only k∥.
   const double dlog = log_derivative_g2(d, phi);
-  k.mu_k = zeta > 0 ? 2.0 * zeta * ((1.0 + dlog) * k.kappa_k + (d - 1.0) * a2 / (2.0 * d * zeta)) /
+  k.mu_k = zeta > 0 ? 2.0 * zeta * ((1.0 + dlog) * k.kappa_k + (d - 1.0) * a2 / (d * zeta)) /
                           (2.0 * k.nu_kappa - 3.0 * zeta)
                     : 0.0;
   return k;
