@@ -212,6 +212,30 @@ ProcessResult run_gnuplot(const std::string& executable, const std::vector<std::
   return result;
 }
 
+// Blanks the creation date that cairo writes into a PDF's information dictionary (cairo 1.16
+// knows no SOURCE_DATE_EPOCH), so that the same data give the same bytes. The entry is
+// overwritten with spaces of its own length: the offsets of the cross-reference table stay right,
+// and the date is optional in PDF. Nothing is done to a file without that entry.
+void blank_creation_date(const fs::path& pdf, const std::string& context) {
+  std::FILE* file = std::fopen(pdf.c_str(), "r+b");
+  if (file == nullptr) throw std::runtime_error(context + ": cannot reopen " + pdf.string());
+  std::string bytes;
+  std::array<char, 1 << 16> buffer{};
+  for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), file)) > 0;)
+    bytes.append(buffer.data(), n);
+  const std::string key = "/CreationDate (";
+  const std::size_t begin = bytes.rfind(key);  // the information dictionary comes last
+  const std::size_t end = begin == std::string::npos ? begin : bytes.find(')', begin);
+  bool written = true;
+  if (end != std::string::npos) {
+    const std::string spaces(end + 1 - begin, ' ');
+    written = std::fseek(file, static_cast<long>(begin), SEEK_SET) == 0 &&
+              std::fwrite(spaces.data(), 1, spaces.size(), file) == spaces.size();
+  }
+  if (std::fclose(file) != 0 || !written)
+    throw std::runtime_error(context + ": cannot rewrite " + pdf.string());
+}
+
 }  // namespace
 
 RenderedFigure render(const FigureScript& script, const RenderOptions& options) {
@@ -265,6 +289,9 @@ RenderedFigure render(const FigureScript& script, const RenderOptions& options) 
                                space_note(directory) + "\n" + result.error_output);
     }
   }
+
+  for (const auto& output : outputs)
+    if (output.final.extension() == ".pdf") blank_creation_date(output.temporary, context);
 
   RenderedFigure rendered;
   outputs.push_back({script_temporary, script_final});

@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstdlib>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -13,6 +14,7 @@
 #include <regex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "molchaos/figures/render.hpp"
 
@@ -337,6 +339,23 @@ BOOST_AUTO_TEST_CASE(linear_hydrodynamics_renders_png_pdf_and_script) {
                  out.path, "fig_sf3");
   check_invalid_argument(
       [&] { fig::render_linear_hydrodynamics({}, "d = 3", "fig_sf3", out.options()); }, "curves");
+}
+
+// The same data give the same bytes: cairo stamps a PDF with the second of its creation, which
+// the renderer blanks (two renderings over a second apart, compared whole).
+BOOST_AUTO_TEST_CASE(the_same_data_give_the_same_pdf) {
+  const OutputDirectory first("same_pdf_1"), second("same_pdf_2");
+  fig::render_fig4(synthetic_fig4(), first.options());
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  fig::render_fig4(synthetic_fig4(), second.options());
+  auto bytes = [](const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), {});
+  };
+  const std::string a = bytes(first.path / "fig4_A_of_eps.pdf");
+  BOOST_TEST(a.find("/CreationDate") == std::string::npos);
+  BOOST_TEST(a.find("%%EOF") != std::string::npos);  // whole
+  BOOST_TEST((a == bytes(second.path / "fig4_A_of_eps.pdf")));
 }
 
 BOOST_AUTO_TEST_CASE(png_only_writes_no_pdf) {
