@@ -335,7 +335,8 @@ void add_simulate_command(CLI::App& app) {
   sim::CheckpointOptions& checkpoints = options->checkpoints;
   cmd->add_option("--checkpoint", checkpoints.path,
                   "Checkpoint file, written atomically at the intervals below and on SIGTERM or "
-                  "SIGINT (then the run ends with exit status 3)")
+                  "SIGINT (then the run ends with exit status 3); not during the relaxation, "
+                  "which a signal ends at once without one")
       ->check(path_name());
   cmd->add_option("--checkpoint-interval", checkpoints.interval,
                   "Simulated time between checkpoints (taken at the first sample time after it; "

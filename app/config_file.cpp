@@ -23,9 +23,8 @@ namespace molchaos::app {
 namespace {
 
 // Header keys of a run or snapshot CSV that describe the result, not its input.
-const std::set<std::string> k_result_keys = {"version", "stop_reason", "collisions", "events",
-                                             "rows",    "cache_key",   "checksum",   "t",
-                                             "box"};
+const std::set<std::string> k_result_keys = {
+    "version", "stop_reason", "collisions", "events", "rows", "cache_key", "checksum", "t", "box"};
 
 std::string trim(const std::string& text) {
   const auto first = text.find_first_not_of(" \t\r");
@@ -159,11 +158,15 @@ std::vector<std::string> words(const std::string& value) {
   return found;
 }
 
-// A result CSV: "# key = value" lines up to the column line; lists are space separated.
-ConfigItems read_csv_header(std::istream& in) {
+// A result CSV: "# key = value" lines up to the column line; lists are space separated. A header
+// line without its line end is the end of a file cut short ("# t_end = 20" of "200"): refused.
+ConfigItems read_csv_header(std::istream& in, const std::string& path) {
   ConfigItems items;
   std::string line;
   while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (in.eof())
+      throw UsageError("--config", path + ": ends in the middle of its header line '" + line +
+                                       "' (a file cut short?)");
     if (line.back() == '\r') line.pop_back();  // a file saved with Windows line ends
     const auto eq = line.find(" = ");
     if (eq == std::string::npos || line.size() < 2) continue;
@@ -181,6 +184,9 @@ ConfigItems read_xyz_header(std::istream& in, const std::string& path) {
   std::string count, comment;
   if (!std::getline(in, count) || !std::getline(in, comment))
     throw UsageError("--config", path + ": no comment line (not an extended XYZ file)");
+  if (in.eof())
+    throw UsageError("--config",
+                     path + ": ends in the middle of its first comment line (a file cut short?)");
   if (!comment.empty() && comment.back() == '\r') comment.pop_back();
   static const std::set<std::string> k_frame_keys = {"Lattice", "Properties", "Time", "Collisions",
                                                      "pbc"};
@@ -269,7 +275,7 @@ ConfigFile read_config_file(const std::string& path) {
     if (!std::filesystem::is_regular_file(path, ec))
       throw UsageError("--config", path + ": an HDF5 file is read from a regular file, not a pipe");
     try {
-      return {io::read_h5md_parameters(path), true};
+      return {io::read_h5md_parameters(path), true, true};
     } catch (const std::runtime_error& e) {
       throw UsageError("--config", e.what());
     }
@@ -286,16 +292,17 @@ ConfigFile read_config_file(const std::string& path) {
   std::istringstream lines(text);
   switch (kind_of(text)) {
     case Kind::xyz:
-      return {read_xyz_header(lines, path), true};
+      return {read_xyz_header(lines, path), true, true};
     case Kind::csv:
-      return {read_csv_header(lines), true};
+      return {read_csv_header(lines, path), true, text.starts_with("# molchaos simulate")};
     case Kind::toml:
       if (ends_with(path, ".csv") && !text.starts_with("#"))
         throw UsageError("--config",
                          path + ": no '# key = value' header (not a molchaos result file)");
       if (cut)
-        throw UsageError("--config", path + ": longer than 16 MiB and not a result file; a file "
-                                            "of options is a few lines of key = value");
+        throw UsageError("--config", path +
+                                         ": longer than 16 MiB and not a result file; a file "
+                                         "of options is a few lines of key = value");
       {
         ConfigItems items = read_toml(lines, path);
         // Comments alone set nothing either: the defaults would run in place of the meant run.
@@ -328,9 +335,27 @@ std::string config_file_that_set(const std::string& flag) {
   return it == values_from_files().end() ? std::string() : it->second;
 }
 
+namespace {
+// Refuses a run's header that lacks a parameter of the table (beyond those left out at their
+// default): the file was cut short, and the missing values would run as defaults.
+void check_run_header_complete(const ConfigItems& items, const std::string& path) {
+  std::string missing;
+  for (const sim::ParameterInfo& info : sim::parameter_table()) {
+    if (info.omitted_at_default) continue;
+    const bool named = std::any_of(items.begin(), items.end(),
+                                   [&](const auto& item) { return item.first == info.name; });
+    if (!named) missing += (missing.empty() ? "" : ", ") + std::string(info.name);
+  }
+  if (!missing.empty())
+    throw UsageError("--config", path + ": the run's header lacks " + missing +
+                                     " (a file cut short?); a run's header names every parameter");
+}
+}  // namespace
+
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const auto [items, result_file] = read_config_file(path);
+  const auto [items, result_file, run_header] = read_config_file(path);
+  if (run_header) check_run_header_complete(items, path);
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;

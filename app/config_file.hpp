@@ -29,6 +29,9 @@ using ConfigItems = std::vector<std::pair<std::string, std::vector<std::string>>
 struct ConfigFile {
   ConfigItems items;
   bool result_file = false;
+  /// A header of one simulate run (its CSV, XYZ or H5MD outputs), which names every parameter
+  /// of the table: one that lacks any was cut short, and is refused.
+  bool run_header = false;
 };
 
 /// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters or an extended XYZ

@@ -161,5 +161,18 @@ refused "key 'density': --density: an empty value or list; give at least one val
 printf 'snapshot_times = []\n' >no_snapshots.toml
 "$bin" simulate --config no_snapshots.toml --particles 100 --t-end 1 --relax 1 --out none.csv \
   --quiet 2>/dev/null || fail "snapshot_times = [] refused"
+# A run's header cut short repeats no run: the missing values would run as defaults. Cut inside a
+# line ("# t_end = 3" of "30"), at a line end before the last parameters, inside an XYZ comment line.
+head -c "$(($(grep -b '^# t_end = ' run.csv | cut -d: -f1) + 11))" run.csv >cut_value.csv
+refused "--config: cut_value.csv: ends in the middle of its header line '# t_end = 3' \(a file cut short\?\)" \
+  simulate --config cut_value.csv
+sed '/^# tc = /,$d' run.csv >cut_lines.csv
+refused "--config: cut_lines.csv: the run's header lacks tc, samples_per_decade, t_first_sample, contact_statistics, snapshot_times, max_collisions, min_temperature \(a file cut short\?\)" \
+  simulate --config cut_lines.csv
+if [ -f traj.xyz ]; then
+  head -c "$(($(grep -b -o 't_end=' traj.xyz | head -n 1 | cut -d: -f1) + 7))" traj.xyz >cut.xyz
+  refused "--config: cut.xyz: ends in the middle of its first comment line \(a file cut short\?\)" \
+    simulate --config cut.xyz
+fi
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
-echo "ok: unknown keys and out-of-range values named with their allowed range"
+echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"
