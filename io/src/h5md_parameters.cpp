@@ -5,6 +5,7 @@
 #include <hdf5.h>
 
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <type_traits>
 #include <variant>
@@ -73,6 +74,12 @@ class AttributeReader {
     return value;
   }
 
+  // Whether the file stores the attribute as a signed integer.
+  bool is_signed() const {
+    const Handle type(H5Aget_type(attribute_.id), H5Tclose);
+    return H5Tget_class(type.id) == H5T_INTEGER && H5Tget_sign(type.id) == H5T_SGN_2;
+  }
+
   [[noreturn]] void fail(const std::string& what) const {
     throw std::runtime_error(path_ + ": attribute /parameters/" + name_ + " " + what);
   }
@@ -106,8 +113,19 @@ std::vector<std::string> row_values(AttributeReader& reader, const sim::Paramete
             texts.push_back(sim::round_trip_text(x));
           if (std::is_same_v<T, double> && texts.size() != 1) reader.fail("is not one number");
         } else if constexpr (std::is_same_v<T, std::uint64_t>) {
-          for (std::uint64_t x : reader.numbers<std::uint64_t>(H5T_NATIVE_UINT64, H5T_INTEGER))
-            texts.push_back(std::to_string(x));
+          // A signed attribute (h5py stores a Python int as int64) is read as one: HDF5's
+          // conversion to uint64 would clip a negative value to 0 without a word.
+          if (reader.is_signed()) {
+            for (std::int64_t x : reader.numbers<std::int64_t>(H5T_NATIVE_INT64, H5T_INTEGER)) {
+              if (x < 0)
+                reader.fail("is " + std::to_string(x) + ", outside the allowed range [0, " +
+                            std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
+              texts.push_back(std::to_string(x));
+            }
+          } else {
+            for (std::uint64_t x : reader.numbers<std::uint64_t>(H5T_NATIVE_UINT64, H5T_INTEGER))
+              texts.push_back(std::to_string(x));
+          }
           if (texts.size() != 1) reader.fail("is not one number");
         } else if constexpr (std::is_same_v<T, bool>) {
           const auto values = reader.numbers<std::int64_t>(H5T_NATIVE_INT64, H5T_INTEGER);

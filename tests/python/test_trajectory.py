@@ -161,3 +161,20 @@ def test_read_trajectory_refuses_a_flag_that_is_not_0_or_1(run, tmp_path):
     with pytest.raises(ValueError, match=r"edited\.h5: attribute /parameters/contact_statistics "
                                          r"is not a flag, 0 or 1: 2"):
         molchaos.read_trajectory(path)
+
+
+def test_config_refuses_a_negative_unsigned_parameter(run, molchaos_bin, tmp_path):
+    """h5py stores a Python int as int64; HDF5's conversion to the seed's uint64 would clip -1 to
+    0 and run another seed without a word."""
+    _, d, _ = run
+    path = tmp_path / "negative.h5"
+    path.write_bytes((d / "run.h5").read_bytes())
+    with h5py.File(path, "r+") as f:
+        f["parameters"].attrs["seed"] = np.int64(-1)
+    out = tmp_path / "again.csv"
+    r = subprocess.run([molchaos_bin, "simulate", "--config", str(path), "--out", str(out),
+                        "--quiet"], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert ("negative.h5: attribute /parameters/seed is -1, outside the allowed range "
+            "[0, 18446744073709551615]") in r.stderr
+    assert not out.exists()
