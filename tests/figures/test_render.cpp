@@ -4,9 +4,9 @@
 #define BOOST_TEST_MODULE figures_render
 #include <algorithm>
 #include <boost/test/unit_test.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -348,10 +348,7 @@ BOOST_AUTO_TEST_CASE(the_same_data_give_the_same_pdf) {
   fig::render_fig4(synthetic_fig4(), first.options());
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));
   fig::render_fig4(synthetic_fig4(), second.options());
-  auto bytes = [](const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), {});
-  };
+  auto bytes = [](const fs::path& path) { return first_bytes(path, fs::file_size(path)); };
   const std::string a = bytes(first.path / "fig4_A_of_eps.pdf");
   BOOST_TEST(a.find("/CreationDate") == std::string::npos);
   BOOST_TEST(a.find("%%EOF") != std::string::npos);  // whole
