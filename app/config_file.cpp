@@ -5,6 +5,7 @@
 #include <charconv>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <ostream>
 #include <set>
@@ -352,10 +353,44 @@ void check_run_header_complete(const ConfigItems& items, const std::string& path
 }
 }  // namespace
 
+namespace {
+// A result file's parameters that name no option of cmd are not used by it. At their default
+// nothing is lost; otherwise the TC model's duration, which changes the gas, is refused (cmd
+// would run another gas), and every other value is named in a note (the run's seed, length and
+// stopping rules, which cmd chooses in its own way).
+void check_parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const std::string& path) {
+  const sim::Parameters defaults;
+  std::string dropped;
+  for (const auto& [key, values] : items) {
+    const sim::ParameterInfo* info = sim::find_parameter(key);
+    if (info == nullptr || option_of(cmd, key) != nullptr) continue;
+    sim::Parameters file = defaults;
+    try {
+      std::string text;
+      for (const auto& v : values) text += (text.empty() ? "" : " ") + v;
+      sim::parse_value(file, *info, text);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError("--config", path + ": " + e.what());
+    }
+    const std::string value = sim::format_value(file, *info);
+    if (value == sim::format_value(defaults, *info)) continue;
+    if (info->name == "tc")
+      throw UsageError("--config", path + ": the run uses the TC model (tc = " + value + "), and " +
+                                       cmd->get_name() +
+                                       " has no option for it: it would treat another gas");
+    dropped += (dropped.empty() ? "" : ", ") + std::string(info->name) + " = " + value;
+  }
+  if (!dropped.empty())
+    std::cerr << "note: --config " << path << ": " << cmd->get_name()
+              << " has no option for the run's " << dropped << "; not used\n";
+}
+}  // namespace
+
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
   const auto [items, result_file, run_header] = read_config_file(path);
   if (run_header) check_run_header_complete(items, path);
+  if (result_file) check_parameters_not_taken(cmd, items, path);
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;

@@ -124,6 +124,13 @@ refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is ou
 "$bin" simulate --particles 100 --t-end 1 --out plain.csv --quiet 2>/dev/null || fail "plain run"
 refused "--relax: value 20 is not allowed with method = dsmc.*\(the value is from --config plain.csv\)" \
   simulate --config plain.csv --method dsmc
+# A run's parameters that another command has no option for are named, not dropped in silence;
+# the TC model's duration, which changes the gas, is refused.
+"$bin" theory --config plain.csv 2>&1 >/dev/null |
+  grep -q '^note: --config plain.csv: theory has no option for the run.s t_end = 1; not used$' ||
+  fail "theory --config of a run does not name the run's length it leaves out"
+refused "--config: run.csv: the run uses the TC model \(tc = 1e-04\), and sweep has no option for it" \
+  sweep --config run.csv
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
