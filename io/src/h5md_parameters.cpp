@@ -155,6 +155,20 @@ std::vector<std::pair<std::string, std::vector<std::string>>> read_h5md_paramete
     throw std::runtime_error(path + ": no /parameters group (not a molchaos trajectory)");
   const Handle group(H5Gopen2(file.id, "parameters", H5P_DEFAULT), H5Gclose);
   if (group.id < 0) throw std::runtime_error(path + ": /parameters is not a group");
+  // An attribute the writer does not write (a parameter of another version, a misspelt name added
+  // by hand) is refused, as an unknown key of a CSV header is: its value would be dropped.
+  std::vector<std::string> names;
+  H5Aiterate2(
+      group.id, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+      [](hid_t, const char* name, const H5A_info_t*, void* out) -> herr_t {
+        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+        return 0;
+      },
+      &names);
+  for (const std::string& name : names)
+    if (sim::find_parameter(name) == nullptr && name != "stop_reason" && name != "version")
+      throw std::runtime_error(path + ": attribute /parameters/" + name +
+                               " names no parameter of this version");
   std::vector<std::pair<std::string, std::vector<std::string>>> items;
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     const std::string name(info.name);

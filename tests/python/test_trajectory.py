@@ -178,3 +178,20 @@ def test_config_refuses_a_negative_unsigned_parameter(run, molchaos_bin, tmp_pat
     assert ("negative.h5: attribute /parameters/seed is -1, outside the allowed range "
             "[0, 18446744073709551615]") in r.stderr
     assert not out.exists()
+
+
+def test_config_refuses_an_attribute_that_names_no_parameter(run, molchaos_bin, tmp_path):
+    """A CSV header's unknown key is refused; so is an H5MD attribute the writer does not write
+    (here a misspelt parameter added by hand), whose value would otherwise be dropped."""
+    _, d, _ = run
+    path = tmp_path / "extra.h5"
+    path.write_bytes((d / "run.h5").read_bytes())
+    with h5py.File(path, "r+") as f:
+        f["parameters"].attrs["restitutoin"] = 0.5
+    out = tmp_path / "again.csv"
+    r = subprocess.run([molchaos_bin, "simulate", "--config", str(path), "--out", str(out),
+                        "--quiet"], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert "extra.h5: attribute /parameters/restitutoin names no parameter of this version" \
+        in r.stderr
+    assert not out.exists()
