@@ -218,7 +218,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
                                     validation::fig4_csv(results));
   validation::write_file_atomically((std::filesystem::path(o.out) / "a2_of_eps.csv").string(),
                                     validation::a2_csv(results));
-  validation::write_correlation_tables(results.correlations, o.out);
+  validation::write_correlation_tables(results.correlations, o.out,
+                                       validation::rerun_lines(results.config));
   validation::write_breakdown_tables(results, o.out);
   validation::write_estimator_table(results, o.out);
   stop_if_interrupted("after the tables (no report)", sweep.cache_directory);

@@ -390,7 +390,15 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
   const auto [items, result_file, run_header] = read_config_file(path);
   if (run_header) check_run_header_complete(items, path);
-  if (result_file) check_parameters_not_taken(cmd, items, path);
+  // The tables of reproduce describe the study beyond its options: all of it follows from the two
+  // they name, quick and seeds, which are required.
+  const bool study_table = result_file && cmd->get_name() == "reproduce";
+  if (study_table && std::none_of(items.begin(), items.end(),
+                                  [](const auto& item) { return item.first == "quick"; }))
+    throw UsageError("--config", path +
+                                     ": names no quick and seeds (not a table of molchaos "
+                                     "reproduce of this version)");
+  if (result_file && !study_table) check_parameters_not_taken(cmd, items, path);
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;
@@ -398,7 +406,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     CLI::Option* op = option_of(cmd, key);
     if (op == nullptr || !op->get_configurable()) {
       // A result file names its outputs and the run's other inputs: skipped where not options.
-      if (result_file && (k_result_keys.count(key) > 0 || sim::find_parameter(key) != nullptr))
+      if (study_table ||
+          (result_file && (k_result_keys.count(key) > 0 || sim::find_parameter(key) != nullptr)))
         continue;
       throw UsageError("--config", path + ": unknown key '" + key + "' for " + cmd->get_name() +
                                        "; allowed: " + allowed_keys(cmd));
@@ -446,6 +455,10 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       values_from_files()[op->get_name()] = path;
     }
   }
+  // A result file of another command (a run's CSV given to bench) would run the defaults.
+  if (result_file && set_by.empty())
+    throw UsageError("--config", path + ": sets no option of " + cmd->get_name() +
+                                     " (a result file of another command?)");
 }
 
 void write_config_toml(const sim::Parameters& p, std::ostream& out) {

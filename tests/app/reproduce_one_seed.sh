@@ -43,3 +43,21 @@ grep -Eq '^\| paper 1 \| .* \| \*\*reproduced\*\* \|' $report || fail "the theor
 grep -q '| not decided |' $report || fail "no comparison row says 'not decided'"
 ! grep -q 'jackknife over seeds 0\.0000' $report || fail "a jackknife over one seed is reported as 0"
 echo "ok: reproduce --quick --seeds 1 writes its report and figures, its verdicts only where errors decide"
+
+# Every table re-runs the reproduction from its own header (reproduce --config TABLE: the quick
+# and seeds lines), here from the run cache: the same tables, byte for byte.
+for table in one/*.csv; do
+  grep -q '^# quick = true$' "$table" && grep -q '^# seeds = 1$' "$table" ||
+    fail "$table does not name the options that re-run it"
+done
+"$bin" reproduce --config one/pair_correlations.csv --threads 2 --out again --cache one/cache \
+  --no-figures --quiet >log.txt 2>&1 || { cat log.txt; fail "reproduce --config of a table failed"; }
+for table in one/*.csv; do
+  cmp "$table" "again/${table#one/}" || fail "$table differs when re-run from its own header"
+done
+"$bin" simulate --particles 50 --t-end 1 --out run.csv --quiet 2>/dev/null || fail "a plain run"
+"$bin" reproduce --config run.csv --out never >out.txt 2>&1 && fail "reproduce ran from a run's CSV"
+grep -q 'names no quick and seeds (not a table of molchaos reproduce' out.txt ||
+  fail "reproduce --config of a run's CSV: $(cat out.txt)"
+[ ! -e never ] || fail "the refused reproduction left its folder behind"
+echo "ok: a table of the reproduction re-runs it from its header; a run's CSV is refused"

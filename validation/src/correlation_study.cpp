@@ -407,15 +407,18 @@ std::string pair_correlations_csv(const CorrelationStudy& S) {
   return out;
 }
 
-void write_correlation_tables(const CorrelationStudy& S, const std::string& directory) {
-  write_file_atomically(directory + "/contact_moments.csv", contact_moments_csv(S));
-  write_file_atomically(directory + "/pair_correlations.csv", pair_correlations_csv(S));
-  write_file_atomically(directory + "/impact_parameter.csv",
-                        impact_parameter_csv(S.impact_parameter,
-                                             table_header(S) +
-                                                 "# impact parameter s = (1 - (g.e/|g|)^2)^((d-1)/2) "
-                                                 "of the colliding pairs, uniform under molecular "
-                                                 "chaos\n"));
+void write_correlation_tables(const CorrelationStudy& S, const std::string& directory,
+                              const std::string& rerun_lines) {
+  const auto write = [&](const std::string& name, const std::string& csv) {
+    write_file_atomically(directory + "/" + name, after_title(csv, rerun_lines));
+  };
+  write("contact_moments.csv", contact_moments_csv(S));
+  write("pair_correlations.csv", pair_correlations_csv(S));
+  write("impact_parameter.csv",
+        impact_parameter_csv(S.impact_parameter,
+                             table_header(S) +
+                                 "# impact parameter s = (1 - (g.e/|g|)^2)^((d-1)/2) of the "
+                                 "colliding pairs, uniform under molecular chaos\n"));
 }
 
 }  // namespace molchaos::validation

@@ -278,10 +278,12 @@ std::string structure_factor_curves_csv(const ReproduceResults& R) {
 }  // namespace
 
 void write_breakdown_tables(const ReproduceResults& R, const std::string& directory) {
-  // Every table names the version that wrote it, after its title line, as the other tables do.
-  const auto write = [&](const std::string& name, std::string csv) {
-    csv.insert(csv.find('\n') + 1, "# version = " + R.version + "\n");
-    write_file_atomically(directory + "/" + name, csv);
+  // Every table names the options that re-run it and the version that wrote it, after its title
+  // line, as the other tables do.
+  const auto write = [&](const std::string& name, const std::string& csv) {
+    write_file_atomically(
+        directory + "/" + name,
+        after_title(csv, rerun_lines(R.config) + "# version = " + R.version + "\n"));
   };
   if (!R.breakdown.empty()) {
     write("breakdown_linear_hydrodynamics.csv", linear_hydrodynamics_csv(R));

@@ -157,7 +157,8 @@ void write_estimator_table(const ReproduceResults& R, const std::string& directo
                       measured(s.cost_ratio), measured(s.shift_from_least_squares.value),
                       measured(s.shift_from_least_squares.error), s.estimator == k_haff_estimator);
     }
-  write_file_atomically((std::filesystem::path(directory) / "haff_estimators.csv").string(), csv);
+  write_file_atomically((std::filesystem::path(directory) / "haff_estimators.csv").string(),
+                        after_title(csv, rerun_lines(R.config)));
 }
 
 }  // namespace molchaos::validation

@@ -65,7 +65,9 @@ std::string contact_moments_csv(const CorrelationStudy& study);
 std::string pair_correlations_csv(const CorrelationStudy& study);
 
 /// Writes directory/contact_moments.csv, pair_correlations.csv and impact_parameter.csv
-/// atomically.
-void write_correlation_tables(const CorrelationStudy& study, const std::string& directory);
+/// atomically, each with `rerun_lines` (the '#' lines of the options that re-run it) after its
+/// title line.
+void write_correlation_tables(const CorrelationStudy& study, const std::string& directory,
+                              const std::string& rerun_lines);
 
 }  // namespace molchaos::validation

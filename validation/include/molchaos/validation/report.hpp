@@ -13,6 +13,13 @@ namespace molchaos::validation {
 /// Writes `text` to path through sim::write_file_atomically, creating the parent folder first.
 void write_file_atomically(const std::string& path, const std::string& text);
 
+/// The '#' lines of the options that re-run a table of the reproduction, which `reproduce
+/// --config TABLE` reads back: quick and seeds, the two options that change what the tables hold.
+std::string rerun_lines(const ReproduceConfig& config);
+
+/// csv with `lines` put after its title (first) line.
+std::string after_title(std::string csv, const std::string& lines);
+
 /// Fig. 4's data, every point: columns density,restitution,randomize,A,A_err,runs,A_theory,
 /// A_theory_err,a2,a2_err,mean_dyad,mean_dyad_err,breakdowns; `randomize` is the MD gas's mode
 /// (none, paper, flux) or `dsmc` for the DSMC gas.
