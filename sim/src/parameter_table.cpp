@@ -3,7 +3,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 
@@ -35,12 +34,9 @@ std::string round_trip_text(double x) {
   return std::string(buffer, end);
 }
 
-std::string message_number(double x) {
-  std::ostringstream out;
-  out.precision(10);
-  out << x;
-  return out.str();
-}
+// Every digit that tells x from its neighbours: a bound printed shorter reads as a value the check
+// refuses (1.11111 for a limit of 1.1111111111111112), or a refused value as an accepted one.
+std::string message_number(double x) { return round_trip_text(x); }
 
 const ParameterInfo* find_parameter(std::string_view name) {
   for (const ParameterInfo& info : parameter_table())

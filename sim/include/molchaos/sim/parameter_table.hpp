@@ -161,7 +161,7 @@ inline const std::array<ParameterInfo, 16>& parameter_table() {
   return table;
 }
 
-/// A number as validation messages print it (10 significant digits, "inf", "nan").
+/// A number as validation messages print it: round_trip_text() ("inf", "nan" included).
 std::string message_number(double x);
 
 /// The shortest text that reads back to the same double, locale independent: how every result
