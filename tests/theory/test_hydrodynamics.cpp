@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE theory_hydrodynamics
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <numbers>
 
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/hydrodynamics.hpp"
@@ -145,11 +146,50 @@ BOOST_AUTO_TEST_CASE(dilute_heat_flux_coefficients_follow_the_sonine_projections
     }
 }
 
+// The dense hard-sphere gas: Garzó and Dufty's (1999) d = 3 expressions, written out here in their
+// own variables (c* = 2a2, the HCS coefficient of their eq. for c*; p* = 1 + 2(1+α)φχ; χ' =
+// dχ/dφ), against the code's d-dimensional form: μ* = μ_k*(1 + (6/5)φχ(1+α)) with
+// μ_k* = 2[ζ*κ_k*(1 + φχ'/χ) + (p*/3 + (2/3)φ(1+α)(χ + φχ'))c*
+//          − (4/5)φχ(1 + φχ'/(2χ))(1+α)(α(1−α) + (4/3 + α(1−α))c*/4)]/(2ν_κ* − 3ζ*),
+// κ_k* = (2/3)[1 + (1+p*)c*/2 + (3/5)φχ(1+α)²(2α − 1 + ((1+α)/2 − 5/(3(1+α)))c*)]/(ν_κ* − 2ζ*),
+// ν_κ* = (χ/3)(1+α)[1 + (33/16)(1−α) + (19 − 3α)c*/1024], ζ* = (5/12)χ(1−α²)(1 + 3c*/32).
+BOOST_AUTO_TEST_CASE(dense_heat_flux_coefficient_is_garzo_dufty_in_three_dimensions) {
+  for (double n : {0.05, 0.2, 0.6})
+    for (double alpha : {0.5, 0.7, 0.9, 0.99}) {
+      const auto c = at(3, n, alpha);
+      const double phi = std::numbers::pi / 6.0 * n;
+      const double chi = (1 - phi / 2) / std::pow(1 - phi, 3);
+      const double chi_prime = (2.5 - phi) / std::pow(1 - phi, 4);  // d/dφ of Carnahan–Starling
+      const double cs = 32 * (1 - alpha) * (1 - 2 * alpha * alpha) /
+                        (81 - 17 * alpha + 30 * alpha * alpha * (1 - alpha));
+      const double p = 1 + 2 * (1 + alpha) * phi * chi;
+      const double zeta = 5.0 / 12.0 * chi * (1 - alpha * alpha) * (1 + 3 * cs / 32);
+      const double nu =
+          chi / 3 * (1 + alpha) * (1 + 33.0 / 16.0 * (1 - alpha) + (19 - 3 * alpha) * cs / 1024);
+      const double kappa_k =
+          2.0 / 3.0 *
+          (1 + (1 + p) * cs / 2 +
+           0.6 * phi * chi * (1 + alpha) * (1 + alpha) *
+               (2 * alpha - 1 + ((1 + alpha) / 2 - 5 / (3 * (1 + alpha))) * cs)) /
+          (nu - 2 * zeta);
+      const double mu_k = 2 *
+                          (zeta * kappa_k * (1 + phi * chi_prime / chi) +
+                           (p / 3 + 2.0 / 3.0 * phi * (1 + alpha) * (chi + phi * chi_prime)) * cs -
+                           0.8 * phi * chi * (1 + phi * chi_prime / (2 * chi)) * (1 + alpha) *
+                               (alpha * (1 - alpha) + (4.0 / 3.0 + alpha * (1 - alpha)) * cs / 4)) /
+                          (2 * nu - 3 * zeta);
+      BOOST_TEST_INFO("n = " << n << ", alpha = " << alpha);
+      BOOST_TEST(c.a2 == cs / 2, boost::test_tools::tolerance(1e-13));
+      BOOST_TEST(c.heat_flux_density == mu_k * (1 + 1.2 * phi * chi * (1 + alpha)),
+                 boost::test_tools::tolerance(1e-12));
+    }
+}
+
 // At strong dissipation μ* outgrows κ* (Cκ* − p*μ* < 0 with ζ*(p*g − C/2) > 0): the determinant
 // of the longitudinal matrix never vanishes and its largest eigenvalue stays positive at every
 // k, so no k∥ exists (critical_heat_wavenumber gave 0, printed as 2π/k∥ = inf, read as never
 // unstable). The flag is checked against the eigenvalues themselves over eight decades of k, at
-// restitutions either side of where it turns on (ε ≈ 0.35 for disks, 0.18 for spheres at
+// restitutions either side of where it turns on (ε ≈ 0.35 for disks, 0.19 for spheres at
 // n = 0.05); where it is off, k∥ exists and the rate changes sign there.
 BOOST_AUTO_TEST_CASE(heat_mode_unstable_at_every_wavelength_at_strong_dissipation) {
   BOOST_TEST(heat_mode_unstable_at_every_wavelength(at(2, 0.05, 0.2)));

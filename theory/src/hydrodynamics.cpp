@@ -44,7 +44,8 @@ struct KineticParts {
   double nu_eta, nu_kappa, eta_k, kappa_k, mu_k;
 };
 
-KineticParts kinetic_parts(int d, double alpha, double phi, double chi, double a2, double zeta) {
+KineticParts kinetic_parts(int d, double alpha, double phi, double chi, double a2, double zeta,
+                           double compressibility) {
   KineticParts k{};
   // ν_η* = (3/(4d)) χ (1 − α + 2d/3)(1 + α)(1 − a2/32); elastic dilute value 1.
   k.nu_eta =
@@ -64,14 +65,24 @@ KineticParts kinetic_parts(int d, double alpha, double phi, double chi, double a
                3.0 * std::pow(2.0, d - 3) / (d + 2) * phi * chi * (1.0 + alpha) * (1.0 + alpha) *
                    (2.0 * alpha - 1.0 + a2 * (1.0 + alpha))) /
               (k.nu_kappa - 2.0 * zeta);
-  // μ_k* = 2ζ*[(1 + φ∂_φ ln χ) κ_k* + (d−1) a2/(dζ*)]/(2ν_κ* − 3ζ*): the dilute form of Brey
-  // et al., (d−1)c/(2dζ*) with c = 2a2, with the density derivative of the Enskog cooling rate
-  // (ζ ∝ nχ). The a2 term is the density-gradient source's projection on S(V)V, a2 where the
-  // temperature gradient's is 1 + 2a2 (κ_k* above), both over (d−1)/d. Garzó–Dufty's
-  // further O(φ(1−α)) collisional terms of μ_k are left out: they vanish as φ → 0
-  // and, with μ itself, as α → 1; μ enters only k∥.
+  // μ_k* = 2[ζ*(1 + φ∂_φ ln χ) κ_k* + C (d−1) a2/d − C_d φχ(1 + ½φ∂_φ ln χ)(1+α)
+  //          (α(1−α) + (B_d + α(1−α)) a2/2)]/(2ν_κ* − 3ζ*)
+  // with C_d = 3·2^{d−2}(d−1)/(d(d+2)), B_d = 2(d−1)/3 and C = p*(1 + φ∂_φ ln p*) the
+  // compressibility of transport_coefficients(). Dilute, it is Brey et al.'s form: the
+  // density-gradient source's projection on S(V)V is a2 where the temperature gradient's is
+  // 1 + 2a2 (κ_k* above), both over (d−1)/d, and ζ*(1 + φ∂_φ ln χ) is the density derivative of
+  // the Enskog cooling rate (ζ ∝ nχ). At finite density the pressure's density derivative C and
+  // the collisional transfer of the first-order distribution (the last term) enter: Garzó and
+  // Dufty (1999), whose d = 3 form (C_3 = 4/5, B_3 = 4/3) the tests check term by term; the d
+  // dependence of C_d and B_d is that of the same first-Sonine projection in d dimensions.
   const double dlog = log_derivative_g2(d, phi);
-  k.mu_k = zeta > 0 ? 2.0 * zeta * ((1.0 + dlog) * k.kappa_k + (d - 1.0) * a2 / (d * zeta)) /
+  const double c_d = 3.0 * two_d2 * (d - 1) / (d * (d + 2.0));
+  const double b_d = 2.0 * (d - 1) / 3.0;
+  const double transfer = c_d * phi * chi * (1.0 + 0.5 * dlog) * (1.0 + alpha) *
+                          (alpha * (1.0 - alpha) + (b_d + alpha * (1.0 - alpha)) * a2 / 2.0);
+  k.mu_k = zeta > 0 ? 2.0 *
+                          (zeta * (1.0 + dlog) * k.kappa_k + compressibility * (d - 1.0) * a2 / d -
+                           transfer) /
                           (2.0 * k.nu_kappa - 3.0 * zeta)
                     : 0.0;
   return k;
@@ -111,7 +122,7 @@ TransportCoefficients transport_coefficients(const HydrodynamicInputs& in) {
   const double two_d2 = std::pow(2.0, d - 2);
   c.pressure = 1.0 + two_d2 * (1.0 + alpha) * phi * chi;
   c.compressibility = 1.0 + two_d2 * (1.0 + alpha) * phi * chi * (2.0 + log_derivative_g2(d, phi));
-  const KineticParts k = kinetic_parts(d, alpha, phi, chi, a2, c.cooling_rate);
+  const KineticParts k = kinetic_parts(d, alpha, phi, chi, a2, c.cooling_rate, c.compressibility);
   // γ* = 2^{2d+1}/(π(d+2)) φ²χ(1+α)(1 − a2/16);
   // η* = η_k*[1 + 2^{d−1}/(d+2) φχ(1+α)] + d/(d+2) γ*;
   // κ* = κ_k*[1 + 3·2^{d−2}/(d+2) φχ(1+α)] + 2^{2d+1}(d−1)/((d+2)²π) φ²χ(1+α)(1 + 7a2/16);

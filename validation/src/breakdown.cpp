@@ -335,7 +335,7 @@ void append_curves(const Box& box, const theory::TransportCoefficients& c,
 // --density 0.2 --particles 2800`): at the paper's n = 0.05, ε = 0.93, L_c = 131σ and a box
 // above it needs ~10^5 spheres. At ε = 0.7, n = 0.2 (packing fraction 0.105, where the Enskog
 // coefficients in the first Sonine approximation hold) L_c = 2π/k⊥ = 16.6σ and the heat mode's
-// 2π/k∥ = 26.3σ. N = 2800 gives a box of 24.1σ between the two, so only the shear mode of the
+// 2π/k∥ = 26.9σ. N = 2800 gives a box of 24.1σ between the two, so only the shear mode of the
 // smallest |k| grows (2λ = 0.0894 per collision per particle); N = 550 gives 14.0σ < L_c, whose
 // largest mode relaxes to S⊥ = 1/(1 − (L/L_c)²) ≈ 3.5. S⊥ = 10 of the three wavevectors of
 // |m|² = 1 holds, with both transverse components, a flow energy of 4·9/2800 ≈ 1.3 % of the
