@@ -68,19 +68,90 @@ Kind kind_of(const std::string& text) {
   return text.find("\n# version = ") != std::string::npos ? Kind::csv : Kind::toml;
 }
 
-// One TOML value: "string" (basic escapes \" and \\), 'literal', or a bare number/boolean.
-std::string toml_scalar(const std::string& text, const std::string& where) {
-  if (text.size() >= 2 && (text.front() == '"' || text.front() == '\'')) {
-    if (text.back() != text.front()) throw UsageError("--config", where + ": unterminated string");
-    std::string value;
-    for (std::size_t k = 1; k + 1 < text.size(); ++k) {
-      if (text.front() == '"' && text[k] == '\\' && k + 2 < text.size()) ++k;
-      value += text[k];
-    }
-    return value;
+// UTF-8 of a code point (a TOML \\uXXXX or \\UXXXXXXXX escape); throws for a surrogate or beyond
+// U+10FFFF, which name no character.
+std::string utf8(unsigned long code, const std::string& where) {
+  if (code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
+    throw UsageError("--config", where + ": a \\u escape that names no character");
+  std::string out;
+  if (code < 0x80) {
+    out += static_cast<char>(code);
+  } else if (code < 0x800) {
+    out += static_cast<char>(0xC0 | (code >> 6));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else if (code < 0x10000) {
+    out += static_cast<char>(0xE0 | (code >> 12));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (code >> 18));
+    out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
   }
+  return out;
+}
+
+// A TOML string: "basic" with TOML's escapes decoded, or 'literal' as written. An escape TOML
+// does not define, or text after the closing quote, is refused: dropping a backslash would name
+// another file ("sub\run.csv" read as subrun.csv).
+std::string toml_string(const std::string& text, const std::string& where) {
+  const char quote = text.front();
+  std::string value;
+  std::size_t k = 1;
+  for (; k < text.size() && text[k] != quote; ++k) {
+    if (quote == '\'' || text[k] != '\\') {
+      value += text[k];
+      continue;
+    }
+    if (++k == text.size()) break;
+    const char e = text[k];
+    const std::string_view plain = "btnfr\"\\", meant = "\b\t\n\f\r\"\\";
+    if (const auto at = plain.find(e); at != std::string_view::npos) {
+      value += meant[at];
+    } else if (e == 'u' || e == 'U') {
+      const std::size_t digits = e == 'u' ? 4 : 8;
+      const std::string hex = text.substr(k + 1, digits);
+      if (hex.size() != digits ||
+          hex.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos)
+        throw UsageError("--config", where + ": \\" + e + " takes " + std::to_string(digits) +
+                                         " hexadecimal digits");
+      value += utf8(std::stoul(hex, nullptr, 16), where);
+      k += digits;
+    } else {
+      throw UsageError("--config",
+                       where + ": unknown escape '\\" + std::string(1, e) +
+                           "' in a string (TOML's: \\b \\t \\n \\f \\r \\\" \\\\ "
+                           "\\uXXXX \\UXXXXXXXX; or write the path in 'single quotes')");
+    }
+  }
+  if (k >= text.size()) throw UsageError("--config", where + ": unterminated string");
+  if (k + 1 != text.size())
+    throw UsageError("--config", where + ": text after the closing quote of a string");
+  return value;
+}
+
+// One TOML value: a string (toml_string), or a bare number/boolean.
+std::string toml_scalar(const std::string& text, const std::string& where) {
   if (text.empty()) throw UsageError("--config", where + ": missing value");
+  if (text.front() == '"' || text.front() == '\'') return toml_string(text, where);
+  if (text.front() == '[')
+    throw UsageError("--config", where + ": arrays inside arrays are not used; give one list");
   return text;
+}
+
+// Where a string of the line opens and closes: quote is the open string's quote (0 outside one);
+// c the next character, escaped whether it follows a backslash inside a "basic" string.
+void track_quote(char& quote, bool& escaped, char c) {
+  if (escaped) {
+    escaped = false;
+  } else if (quote == '"' && c == '\\') {
+    escaped = true;
+  } else if (quote == 0 && (c == '"' || c == '\'')) {
+    quote = c;
+  } else if (c == quote) {
+    quote = 0;
+  }
 }
 
 // Splits at the top-level commas of an array's inside (commas inside strings are kept).
@@ -88,16 +159,14 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
   std::vector<std::string> values;
   std::string item;
   char quote = 0;
+  bool escaped = false;
   for (const char c : inside) {
     if (quote == 0 && c == ',') {
       if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
       item.clear();
       continue;
     }
-    if (quote == 0 && (c == '"' || c == '\''))
-      quote = c;
-    else if (c == quote)
-      quote = 0;
+    track_quote(quote, escaped, c);
     item += c;
   }
   if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
@@ -107,13 +176,10 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
 // The text before a comment: '#' outside quotes.
 std::string strip_comment(const std::string& line) {
   char quote = 0;
+  bool escaped = false;
   for (std::size_t k = 0; k < line.size(); ++k) {
-    const char c = line[k];
-    if (quote == 0 && c == '#') return line.substr(0, k);
-    if (quote == 0 && (c == '"' || c == '\''))
-      quote = c;
-    else if (c == quote)
-      quote = 0;
+    if (quote == 0 && line[k] == '#') return line.substr(0, k);
+    track_quote(quote, escaped, line[k]);
   }
   return line;
 }

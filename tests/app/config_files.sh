@@ -134,6 +134,20 @@ refused "--config: run.csv: the run uses the TC model \(tc = 1e-04\), and sweep 
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
+# TOML strings: the escapes decoded as TOML defines them (a dropped backslash named another
+# file), an escape TOML lacks refused, an escaped quote no end of the string, nested arrays refused.
+cat >escapes.toml <<'TOML'
+particles = 50
+t_end = 1
+out = "back\\slash \"q\" fl\u0075x.csv" # a comment after the string
+TOML
+"$bin" simulate --config escapes.toml --quiet 2>/dev/null || fail "run from escapes.toml"
+[ -s 'back\slash "q" flux.csv' ] || fail "the TOML escapes of a string are not decoded: $(ls | grep -a slash)"
+printf 'out = "sub\\qrun.csv"\n' >bad_escape.toml
+refused "--config: bad_escape.toml line 1: unknown escape '\\\\q' in a string" \
+  simulate --config bad_escape.toml
+printf 'density = [0.05, [0.1]]\n' >nested.toml
+refused "--config: nested.toml line 1: arrays inside arrays are not used" sweep --config nested.toml
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
 refused "--config: twice.toml: key 'density' sets --density again \(first as 'density'\); give each option once" \
   simulate --config twice.toml
