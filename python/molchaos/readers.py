@@ -14,6 +14,15 @@ import pandas as pd
 # an equals sign in its prose ("(sigma = m = 1, T0 = 1)") is text, not a key.
 _KEY_LINE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\s*=(?:\s(.*))?$")
 
+# Keys whose value is text whatever it looks like: a cache key of hexadecimal digits such as
+# 916905785310e500 reads as a float (inf), one of decimal digits as an int without its leading
+# zeros.
+_TEXT_KEYS = {"cache_key", "checksum", "version", "stop_reason"}
+
+# The options of `molchaos sweep` that list values: lists in its summary's header even when they
+# hold one value, as numbers (density, restitution) or names (randomize, method).
+_SWEEP_LISTS = {"density": float, "restitution": float, "randomize": str, "method": str}
+
 
 def _header_value(text):
     """A header value as int, float, bool, list of floats or str, whichever reads back exactly."""
@@ -46,6 +55,7 @@ def _read_header(path):
     """The `# key = value` lines at the top of a file, and how many comment lines there are. Lines
     of text without a key (the title, notes) are joined into metadata["description"]."""
     metadata = {}
+    raw = {}
     text = []
     comment_lines = 0
     try:
@@ -58,7 +68,9 @@ def _read_header(path):
                 body = line[1:].strip()
                 match = _KEY_LINE.match(body)
                 if match:
-                    metadata[match.group(1)] = _header_value((match.group(2) or "").strip())
+                    key, value = match.group(1), (match.group(2) or "").strip()
+                    metadata[key] = value if key in _TEXT_KEYS else _header_value(value)
+                    raw[key] = value
                 elif body:
                     text.append(body)
     except UnicodeDecodeError:
@@ -69,6 +81,10 @@ def _read_header(path):
     if "snapshot_times" in metadata and not isinstance(metadata["snapshot_times"], list):
         value = metadata["snapshot_times"]
         metadata["snapshot_times"] = [] if value == "" else [float(value)]
+    if text and text[0].startswith("molchaos sweep summary"):
+        for key, convert in _SWEEP_LISTS.items():
+            if key in raw:
+                metadata[key] = [convert(w) for w in raw[key].split()]
     return metadata, comment_lines
 
 

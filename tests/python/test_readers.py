@@ -164,3 +164,26 @@ def test_a_carriage_return_alone_is_refused(tmp_path):
     table.write_bytes(b"a,b,c\r1,2,3\r4,5\r\n")
     with pytest.raises(ValueError, match=r"cr\.csv: a carriage return alone ends a line"):
         molchaos.read_table(table)
+
+
+def test_text_keys_stay_text(tmp_path):
+    # A cache key of hexadecimal digits with an 'e' read as a float: 916905785310e500 was inf; one
+    # of decimal digits would lose its leading zeros as an int.
+    run = tmp_path / "key.csv"
+    run.write_text("# molchaos simulate: a header\n# cache_key = 916905785310e500\n"
+                   "# checksum = 0012\n# version = 1\n# particles = 150\nt,T\n0,1\n")
+    _, meta = molchaos.read_table(run)
+    assert meta["cache_key"] == "916905785310e500" and meta["checksum"] == "0012"
+    assert meta["version"] == "1" and meta["particles"] == 150
+
+
+def test_a_sweep_summary_lists_its_points_as_lists(molchaos_bin, tmp_path):
+    # One density and one mode were a float and a string, two densities a list: a script looping
+    # over the header's points broke on the single ones.
+    out = tmp_path / "sweep.csv"
+    subprocess.run([molchaos_bin, "sweep", "--particles", "100", "--restitution", "0.9,0.8",
+                    "--seeds", "2", "--t-end-tau0", "0.5", "--cache", "", "--quiet", "--threads",
+                    "1", "--out", str(out)], check=True, capture_output=True)
+    frame, meta = molchaos.read_table(out)
+    assert meta["density"] == [0.05] and meta["restitution"] == [0.9, 0.8]
+    assert meta["randomize"] == ["none"] and len(frame) == 2
