@@ -35,6 +35,14 @@ rows pc.csv | awk -F, '$3 == "all" && $4 > 3 { z = ($6 - 1) / $7; c += z * z; k+
   fail "the header does not repeat the run"
 diff <(grep -v '^# version' pc.csv) <(grep -v '^# version' again_pc.csv) > /dev/null ||
   fail "the repeated run's table differs"
+# The times and bin edges in full: a snapshot time 3.3333333333333335 printed as 3.333333333 matched
+# no snapshot's "# t = ", and edges cut to 6 digits gave other pair counts.
+"$bin" "${args[@]}" --snapshot-times 3.3333333333333335 --pair-correlations third.csv \
+  --out third.csv.run > /dev/null 2>&1 || fail "run with a snapshot at 10/3"
+[ "$(rows third.csv | cut -d, -f1 | sort -u)" = 3.3333333333333335 ] ||
+  fail "the time column is not the snapshot's time: $(rows third.csv | cut -d, -f1 | sort -u)"
+rows third.csv | awk -F, '{ if (split($4, a, ".") == 2 && length(a[2]) > 6) long++ }
+  END { exit long > 0 ? 0 : 1 }' || fail "the bin edges are cut to 6 digits"
 "$bin" "${args[@]}" --pair-correlations x.csv > err.txt 2>&1 && fail "accepted without --snapshot-times"
 grep -q -- '--pair-correlations.*--snapshot-times' err.txt || fail "error does not name the flags"
 [ -e x.csv ] && fail "a table was written after the error"

@@ -39,7 +39,7 @@ void write_run_pair_correlations(const sim::RunResult& run, std::ostream& out) {
   for (const auto& snap : run.snapshots) {
     const double tau = collisions_per_particle_at(run, snap.t);
     for (const auto& b : combine_pair_sums({pair_sums(snap, d, default_pair_grid(snap.box))}, d))
-      out << fmt::format("{:.10g},{:.6g},{},{:.6g},{:.6g},{:.6g},{:.3g},{:.5g},{:.3g},{:.5g},{:.3g},{}\n",
+      out << fmt::format("{},{:.6g},{},{},{},{:.6g},{:.3g},{:.5g},{:.3g},{:.5g},{:.3g},{}\n",
                          snap.t, tau, to_string(b.side), b.r_lo, b.r_hi, b.g.value, b.g.error,
                          b.G_par.value, b.G_par.error, b.G_perp.value, b.G_perp.error, b.pairs);
   }
