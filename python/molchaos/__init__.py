@@ -1,8 +1,21 @@
 """molchaos from Python: the kinetic theory and the event-driven simulation of granular gases
 (compiled extension _molchaos), and readers for every file the suite writes (readers.py)."""
 
-from ._molchaos import __version__, simulate, theory
+from ._molchaos import __version__, simulate
+from ._molchaos import _theory, _theory_keywords
 from .readers import read_run_csv, read_snapshot_csv, read_table, read_trajectory
+
+
+def theory(*args, **kwargs):
+    # An unknown keyword named, as simulate() names it (pybind11's message lists the signature).
+    for key in kwargs:
+        if key not in _theory_keywords:
+            raise TypeError(f"theory() got an unexpected keyword argument '{key}'; allowed: "
+                            f"{', '.join(_theory_keywords)}")
+    return _theory(*args, **kwargs)
+
+
+theory.__doc__ = _theory.__doc__
 
 __all__ = [
     "__version__",

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <atomic>
 #include <cerrno>
 #include <cmath>
@@ -546,11 +547,16 @@ PYBIND11_MODULE(_molchaos, m) {
     }
   });
   m.attr("__version__") = std::string(molchaos::k_version);
+  // theory()'s keywords: its signature below, and the check of unknown keywords in the package
+  // (__init__.py), whose message names the keyword (pybind11's prints the whole signature).
+  static constexpr std::array<const char*, 6> keywords{"dim", "restitution", "density",
+                                                       "b",   "quadrature",  "tolerance"};
+  m.attr("_theory_keywords") = py::cast(std::vector<std::string>(keywords.begin(), keywords.end()));
   m.def(
-      "theory", &theory_prediction, py::kw_only(), py::arg("dim") = py::int_(2),
-      py::arg("restitution") = py::float_(0.9), py::arg("density") = py::float_(0.05),
-      py::arg("b") = py::float_(0.0), py::arg("quadrature") = py::str("gauss"),
-      py::arg("tolerance") = py::none(),
+      "_theory", &theory_prediction, py::kw_only(), py::arg(keywords[0]) = py::int_(2),
+      py::arg(keywords[1]) = py::float_(0.9), py::arg(keywords[2]) = py::float_(0.05),
+      py::arg(keywords[3]) = py::float_(0.0), py::arg(keywords[4]) = py::str("gauss"),
+      py::arg(keywords[5]) = py::none(),
       "Kinetic-theory prediction for one state point (the CLI's `molchaos theory`).\n\n"
       "dim: 2 or 3; restitution: in (0, 1]; density: reduced density n, above 0 and below close\n"
       "packing; b: the velocity correlation at contact of the paper's ansatz, in the range where\n"

@@ -412,3 +412,11 @@ except MemoryError as e:
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith("out of memory") and "fewer particles" in out.stdout
+
+
+def test_theory_names_an_unknown_keyword():
+    # Was pybind11's "incompatible function arguments" with the whole signature.
+    with pytest.raises(TypeError, match=r"theory\(\) got an unexpected keyword argument "
+                                        r"'restiution'; allowed: dim, restitution, density"):
+        molchaos.theory(restiution=0.9)
+    assert molchaos.theory(restitution=0.8)["restitution"] == 0.8
