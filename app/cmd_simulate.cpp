@@ -13,8 +13,10 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -134,11 +136,18 @@ void remove_earlier_snapshots(const SimulateOptions& o, std::size_t from,
       if (!f.empty() && std::filesystem::equivalent(path, f, ec)) return true;
     return false;
   };
+  // The replaced run's snapshot times name how many files it wrote: each is visited, so a gap
+  // (one of them removed by hand) leaves none of the later ones behind.
+  std::size_t count = 0;
+  for (const std::string& line : replaced)
+    if (line.starts_with("# snapshot_times = ")) {
+      std::istringstream times(line.substr(std::string_view("# snapshot_times = ").size()));
+      for (std::string time; times >> time;) count += time != "none";
+    }
   std::error_code ignored;
-  for (std::size_t k = from;; ++k) {
+  for (std::size_t k = from; k < count; ++k) {
     const std::string path = snapshot_path(o.out, k);
-    if (own(path) || parameter_lines(path) != replaced) return;
-    std::filesystem::remove(path, ignored);
+    if (!own(path) && parameter_lines(path) == replaced) std::filesystem::remove(path, ignored);
   }
 }
 

@@ -97,6 +97,7 @@ mkdir data.v2 sub
 grep -q "stop_reason = max_collisions" stop.csv && [ -f stop.snapshot0.csv ] && [ ! -e stop.snapshot1.csv ] ||
   fail "the earlier run's snapshot at a time the new run did not reach stayed: $(ls stop*)"
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --snapshot-times 0.5,10,25 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, three snapshots"
+rm stop.snapshot1.csv  # a gap in the replaced run's snapshots: the later one goes all the same
 "$bin" simulate --particles 100 --t-end 30 --relax 1 --quiet --out stop.csv 2>/dev/null || fail "simulate stop.csv, no snapshots"
 [ -z "$(ls stop.snapshot* 2>/dev/null)" ] || fail "an earlier run's snapshots stayed beside a run without: $(ls stop*)"
 # Only the replaced run's snapshots go: not this run's other outputs named like snapshots, nor
