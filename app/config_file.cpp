@@ -14,6 +14,7 @@
 #include <variant>
 
 #include "cli_support.hpp"
+#include "molchaos/sim/csv.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "repeated_options.hpp"
 #ifdef MOLCHAOS_HAVE_IO
@@ -361,7 +362,7 @@ ConfigFile read_config_file(const std::string& path) {
     case Kind::xyz:
       return {read_xyz_header(lines, path), true, true};
     case Kind::csv:
-      return {read_csv_header(lines, path), true, text.starts_with("# molchaos simulate")};
+      return {read_csv_header(lines, path), true, text.starts_with(sim::k_run_title)};
     case Kind::toml:
       if (ends_with(path, ".csv") && !text.starts_with("#"))
         throw UsageError("--config",

@@ -26,8 +26,9 @@ void write_run_pair_correlations(const sim::RunResult& run, std::ostream& out) {
     throw std::invalid_argument(
         "pair correlations: the run has no snapshot times (give --snapshot-times)");
   const int d = run.parameters.dimension;
-  out << "# molchaos simulate: pair correlation functions of the snapshots, c = v/sqrt(2T) at the "
-         "snapshot's T; errors of one snapshot\n"
+  out << sim::k_run_title
+      << ": pair correlation functions of the snapshots, c = v/sqrt(2T) at the snapshot's T; "
+         "errors of one snapshot\n"
       << "# version = " << run.version << "\n";
   sim::write_parameter_lines(run.parameters, out);
   // A run that stopped before its first snapshot time (a stop condition, a collapse) measured

@@ -5,10 +5,15 @@
 
 #include <iosfwd>
 #include <string>
+#include <string_view>
 
 #include "molchaos/sim/result.hpp"
 
 namespace molchaos::sim {
+
+/// How the title line of a run's own result files begins (its CSV and pair-correlation table):
+/// `--config` takes a header that begins so for a whole run's, which names every parameter.
+inline constexpr std::string_view k_run_title = "# molchaos simulate";
 
 void write_csv(const RunResult& result, std::ostream& out);
 /// The parameter lines of a result file's header, "# <name> = <value>" per row of the parameter
