@@ -129,6 +129,14 @@ std::string toml_string(const std::string& text, const std::string& where) {
   if (k >= text.size()) throw UsageError("--config", where + ": unterminated string");
   if (k + 1 != text.size())
     throw UsageError("--config", where + ": text after the closing quote of a string");
+  // TOML's control escapes name characters no option takes: "C:\runs\new.csv" holds a
+  // carriage return and a line feed where a Windows path was meant.
+  if (std::any_of(value.begin(), value.end(),
+                  [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7F; }))
+    throw UsageError("--config", where +
+                                     ": a control character in a string (an escape such as \\r "
+                                     "or \\n; a Windows path? write it with / or in 'single "
+                                     "quotes')");
   return value;
 }
 

@@ -146,6 +146,9 @@ TOML
 printf 'out = "sub\\qrun.csv"\n' >bad_escape.toml
 refused "--config: bad_escape.toml line 1: unknown escape '\\\\q' in a string" \
   simulate --config bad_escape.toml
+printf 'out = "C:\\runs\\new.csv"\n' >windows.toml  # \r and \n: control characters
+refused "--config: windows.toml line 1: a control character in a string .*'single quotes'" \
+  simulate --config windows.toml
 printf 'density = [0.05, [0.1]]\n' >nested.toml
 refused "--config: nested.toml line 1: arrays inside arrays are not used" sweep --config nested.toml
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml
