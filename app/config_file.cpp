@@ -429,35 +429,34 @@ void check_run_header_complete(const ConfigItems& items, const std::string& path
 }  // namespace
 
 namespace {
-// A result file's parameters that name no option of cmd are not used by it. At their default
-// nothing is lost; otherwise the TC model's duration, which changes the gas, is refused (cmd
-// would run another gas), and every other value is named in a note (the run's seed, length and
-// stopping rules, which cmd chooses in its own way).
-void check_parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const std::string& path) {
-  const sim::Parameters defaults;
+// A result file's parameters that name no option of cmd are not used by it. The TC model's
+// duration, which changes the gas, is refused where set (cmd would treat another gas); the others
+// are returned, "name = value, ...", for the note that names them once the file is applied (the
+// run's seed, length and stopping rules, which cmd chooses in its own way, or its gas where cmd
+// runs one of its own).
+std::string parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const std::string& path) {
   std::string dropped;
   for (const auto& [key, values] : items) {
     const sim::ParameterInfo* info = sim::find_parameter(key);
     if (info == nullptr || option_of(cmd, key) != nullptr) continue;
-    sim::Parameters file = defaults;
-    try {
-      std::string text;
-      for (const auto& v : values) text += (text.empty() ? "" : " ") + v;
-      sim::parse_value(file, *info, text);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError("--config", path + ": " + e.what());
+    std::string text;
+    for (const auto& v : values) text += (text.empty() ? "" : " ") + v;
+    if (info->name == "tc") {
+      sim::Parameters file;
+      try {
+        sim::parse_value(file, *info, text);
+        sim::check_range(file, *info);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError("--config", path + ": " + e.what());
+      }
+      if (file.tc > 0.0)
+        throw UsageError("--config", path + ": the run uses the TC model (tc = " + text +
+                                         "), and " + cmd->get_name() +
+                                         " has no option for it: it would treat another gas");
     }
-    const std::string value = sim::format_value(file, *info);
-    if (value == sim::format_value(defaults, *info)) continue;
-    if (info->name == "tc")
-      throw UsageError("--config", path + ": the run uses the TC model (tc = " + value + "), and " +
-                                       cmd->get_name() +
-                                       " has no option for it: it would treat another gas");
-    dropped += (dropped.empty() ? "" : ", ") + std::string(info->name) + " = " + value;
+    dropped += (dropped.empty() ? "" : ", ") + key + " = " + (text.empty() ? "none" : text);
   }
-  if (!dropped.empty())
-    std::cerr << "note: --config " << path << ": " << cmd->get_name()
-              << " has no option for the run's " << dropped << "; not used\n";
+  return dropped;
 }
 }  // namespace
 
@@ -473,7 +472,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     throw UsageError("--config", path +
                                      ": names no quick and seeds (not a table of molchaos "
                                      "reproduce of this version)");
-  if (result_file && !study_table) check_parameters_not_taken(cmd, items, path);
+  const std::string not_taken =
+      result_file && !study_table ? parameters_not_taken(cmd, items, path) : std::string();
   // The key that set each option: a second key for the same option (repeated, or spelled both
   // as the parameter name and as the flag) would otherwise be dropped without a word.
   std::map<const CLI::Option*, std::string> set_by;
@@ -534,6 +534,9 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (result_file && set_by.empty())
     throw UsageError("--config", path + ": sets no option of " + cmd->get_name() +
                                      " (a result file of another command?)");
+  if (!not_taken.empty())
+    std::cerr << "note: --config " << path << ": " << cmd->get_name()
+              << " has no option for the run's " << not_taken << "; not used\n";
 }
 
 void write_config_toml(const sim::Parameters& p, std::ostream& out) {

@@ -127,10 +127,20 @@ refused "--relax: value 20 is not allowed with method = dsmc.*\(the value is fro
 # A run's parameters that another command has no option for are named, not dropped in silence;
 # the TC model's duration, which changes the gas, is refused.
 "$bin" theory --config plain.csv 2>&1 >/dev/null |
-  grep -q '^note: --config plain.csv: theory has no option for the run.s t_end = 1; not used$' ||
+  grep -q '^note: --config plain.csv: theory has no option for the run.s randomize = none, seed = 1, t_end = 1, .*; not used$' ||
   fail "theory --config of a run does not name the run's length it leaves out"
 refused "--config: run.csv: the run uses the TC model \(tc = 1e-04\), and sweep has no option for it" \
   sweep --config run.csv
+# An edited tc of -0 is no TC model; a negative one is out of range, not a TC model.
+sed 's/^# tc = .*/# tc = -0/' run.csv >minus_zero.csv
+"$bin" theory --config minus_zero.csv >/dev/null 2>&1 || fail "theory refused a run with tc = -0"
+sed 's/^# tc = .*/# tc = -1/' run.csv >negative_tc.csv
+refused "--config: negative_tc.csv: tc: value -1 is outside the allowed range \[0, inf\)" \
+  theory --config negative_tc.csv
+# A refused file prints no note before its error: the note would say the file was used.
+"$bin" sweep --particles 300 --seeds 2 --restitution 1 --t-end-elastic 5 --cache cache \
+  --out for_theory.csv --threads 1 >/dev/null 2>&1 || fail "sweep for theory"
+refused "--config: for_theory.csv: unknown key 'seeds' for theory" theory --config for_theory.csv
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
