@@ -143,6 +143,8 @@ std::string toml_string(const std::string& text, const std::string& where) {
 // One TOML value: a string (toml_string), or a bare number/boolean.
 std::string toml_scalar(const std::string& text, const std::string& where) {
   if (text.empty()) throw UsageError("--config", where + ": missing value");
+  if (text.front() == '{')
+    throw UsageError("--config", where + ": inline tables are not used; write key = value lines");
   if (text.front() == '"' || text.front() == '\'') return toml_string(text, where);
   if (text.front() == '[')
     throw UsageError("--config", where + ": arrays inside arrays are not used; give one list");
@@ -171,13 +173,17 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
   bool escaped = false;
   for (const char c : inside) {
     if (quote == 0 && c == ',') {
-      if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
+      // An empty element ([1,, 2]) is no TOML: dropping it would run the list without a word.
+      if (trim(item).empty())
+        throw UsageError("--config", where + ": an empty element in an array");
+      values.push_back(toml_scalar(trim(item), where));
       item.clear();
       continue;
     }
     track_quote(quote, escaped, c);
     item += c;
   }
+  // A trailing comma is TOML ([1, 2,]); an empty array ([]) holds no element.
   if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
   return values;
 }
@@ -467,11 +473,12 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
   // The tables of reproduce describe the study beyond its options: all of it follows from the two
   // they name, quick and seeds, which are required.
   const bool study_table = result_file && cmd->get_name() == "reproduce";
-  if (study_table && std::none_of(items.begin(), items.end(),
-                                  [](const auto& item) { return item.first == "quick"; }))
-    throw UsageError("--config", path +
-                                     ": names no quick and seeds (not a table of molchaos "
-                                     "reproduce of this version)");
+  for (const char* key : {"quick", "seeds"})
+    if (study_table && std::none_of(items.begin(), items.end(),
+                                    [&](const auto& item) { return item.first == key; }))
+      throw UsageError("--config", path + ": names no " + key +
+                                       " (not a table of molchaos reproduce of this version, "
+                                       "whose tables name quick and seeds)");
   const std::string not_taken =
       result_file && !study_table ? parameters_not_taken(cmd, items, path) : std::string();
   // The key that set each option: a second key for the same option (repeated, or spelled both

@@ -159,6 +159,10 @@ refused "--config: bad_escape.toml line 1: unknown escape '\\\\q' in a string" \
 printf 'out = "C:\\runs\\new.csv"\n' >windows.toml  # \r and \n: control characters
 refused "--config: windows.toml line 1: a control character in a string .*'single quotes'" \
   simulate --config windows.toml
+printf 'out = {a = 1}\n' >inline.toml
+refused "--config: inline.toml line 1: inline tables are not used" simulate --config inline.toml
+printf 'snapshot-times = [0.001,, 0.005]\n' >hole.toml
+refused "--config: hole.toml line 1: an empty element in an array" simulate --config hole.toml
 printf 'density = [0.05, [0.1]]\n' >nested.toml
 refused "--config: nested.toml line 1: arrays inside arrays are not used" sweep --config nested.toml
 printf 'density = 0.1\nt_end = 5\ndensity = 0.2\n' >twice.toml

@@ -57,7 +57,10 @@ for table in one/*.csv; do
 done
 "$bin" simulate --particles 50 --t-end 1 --out run.csv --quiet 2>/dev/null || fail "a plain run"
 "$bin" reproduce --config run.csv --out never >out.txt 2>&1 && fail "reproduce ran from a run's CSV"
-grep -q 'names no quick and seeds (not a table of molchaos reproduce' out.txt ||
+grep -q 'names no quick (not a table of molchaos reproduce' out.txt ||
   fail "reproduce --config of a run's CSV: $(cat out.txt)"
 [ ! -e never ] || fail "the refused reproduction left its folder behind"
+grep -v '^# quick = ' one/fig4_A_of_eps.csv >no_quick.csv  # seeds alone: no scale to run at
+"$bin" reproduce --config no_quick.csv --out never >out.txt 2>&1 && fail "reproduce ran without quick"
+grep -q 'no_quick.csv: names no quick' out.txt || fail "a table without quick: $(cat out.txt)"
 echo "ok: a table of the reproduction re-runs it from its header; a run's CSV is refused"
