@@ -126,6 +126,7 @@ inline std::string flag_of_field(const std::string& field) {
   for (const auto& [name, element] : lists)
     if (field == name) return std::string(sim::find_parameter(element)->flag);
   if (field == "t_end_in_tau0") return "--t-end-tau0";
+  if (field == "correlation_b") return "--b";  // the theory's name for the ansatz's b
   std::string flag = "--" + field;
   for (char& c : flag)
     if (c == '_') c = '-';
