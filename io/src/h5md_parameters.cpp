@@ -169,6 +169,19 @@ std::vector<std::pair<std::string, std::vector<std::string>>> read_h5md_paramete
     if (sim::find_parameter(name) == nullptr && name != "stop_reason" && name != "version")
       throw std::runtime_error(path + ": attribute /parameters/" + name +
                                " names no parameter of this version");
+  // The writer puts only attributes there: a group or dataset (a parameter stored as a dataset in
+  // place of its attribute) would be passed over.
+  hsize_t objects = 0;
+  H5G_info_t group_info;
+  if (H5Gget_info(group.id, &group_info) >= 0) objects = group_info.nlinks;
+  if (objects > 0) {
+    char name[256] = {};
+    H5Lget_name_by_idx(group.id, ".", H5_INDEX_NAME, H5_ITER_INC, 0, name, sizeof name - 1,
+                       H5P_DEFAULT);
+    throw std::runtime_error(path + ": /parameters holds " + std::to_string(objects) +
+                             " group(s) or dataset(s), such as '" + name +
+                             "'; the run's parameters are its attributes");
+  }
   std::vector<std::pair<std::string, std::vector<std::string>>> items;
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     const std::string name(info.name);

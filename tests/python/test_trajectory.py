@@ -195,3 +195,18 @@ def test_config_refuses_an_attribute_that_names_no_parameter(run, molchaos_bin, 
     assert "extra.h5: attribute /parameters/restitutoin names no parameter of this version" \
         in r.stderr
     assert not out.exists()
+
+
+def test_config_refuses_a_dataset_under_parameters(run, molchaos_bin, tmp_path):
+    """A parameter stored as a dataset in place of its attribute was passed over (and reported as
+    missing); any group or dataset under /parameters is refused, named."""
+    _, d, _ = run
+    path = tmp_path / "dataset.h5"
+    path.write_bytes((d / "run.h5").read_bytes())
+    with h5py.File(path, "r+") as f:
+        f["parameters"].create_dataset("restitution_ds", data=0.5)
+    r = subprocess.run([molchaos_bin, "simulate", "--config", str(path), "--out",
+                        str(tmp_path / "again.csv"), "--quiet"], capture_output=True, text=True)
+    assert r.returncode == 2
+    assert ("dataset.h5: /parameters holds 1 group(s) or dataset(s), such as 'restitution_ds'"
+            in r.stderr)
