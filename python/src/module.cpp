@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -247,8 +248,22 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
       continue;
     }
     const sim::ParameterInfo* info = sim::find_parameter(name == "dim" ? "dimension" : name);
-    if (info == nullptr)
-      throw py::type_error("simulate() got an unexpected keyword argument '" + name + "'");
+    if (info == nullptr) {
+      // The allowed keywords, and the row a CLI flag's name given as a keyword means (relax for
+      // relax_collisions_per_particle): the message says what to write instead.
+      std::string allowed = "dim", meant;
+      for (const sim::ParameterInfo& row : sim::parameter_table()) {
+        allowed += ", " + std::string(row.name);
+        std::string flag(row.flag.substr(2));
+        std::replace(flag.begin(), flag.end(), '-', '_');
+        if (flag == name)
+          meant =
+              "; the CLI's " + std::string(row.flag) + " is '" + std::string(row.name) + "' here";
+      }
+      throw py::type_error("simulate() got an unexpected keyword argument '" + name + "'" + meant +
+                           "; allowed: " + allowed +
+                           ", checkpoint, checkpoint_interval, checkpoint_wall, restart");
+    }
     if (const auto [first, inserted] = given.emplace(info, name); !inserted)  // dim and dimension
       throw py::type_error("simulate() got '" + name + "' and '" + first->second +
                            "' for the same parameter; give one");

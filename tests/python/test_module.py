@@ -420,3 +420,12 @@ def test_theory_names_an_unknown_keyword():
                                         r"'restiution'; allowed: dim, restitution, density"):
         molchaos.theory(restiution=0.9)
     assert molchaos.theory(restitution=0.8)["restitution"] == 0.8
+
+
+def test_simulate_names_an_unknown_keyword_and_what_a_flag_is_called_here():
+    with pytest.raises(TypeError, match=r"simulate\(\) got an unexpected keyword argument 'relax'; "
+                                        r"the CLI's --relax is 'relax_collisions_per_particle' "
+                                        r"here; allowed: dim, dimension, particles"):
+        molchaos.simulate(relax=0)
+    with pytest.raises(TypeError, match=r"argument 'tend'; allowed: dim, .*, restart$"):
+        molchaos.simulate(tend=1)
