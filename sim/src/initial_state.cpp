@@ -34,9 +34,27 @@ StartLattice start_lattice(int dimension, std::int64_t n, double box) {
 }
 
 double densest_start(int dimension, std::int64_t n, double box) {
-  // Lattice distances scale with L ~ n^(-1/d): the densest start this lattice gives for this N.
+  // Lattice distances scale with L ~ n^(-1/d): fits() ends near density n^... (nearest/(1 +
+  // 1e-9))^d. The bound printed is the check's own: the least density that fits() refuses, with
+  // the box side as box_side() computes it, found by bisection from that estimate (a bound
+  // computed apart from the check differed from it in the sixth digit).
+  const auto fits = [&](double density) {
+    const double side = std::pow(static_cast<double>(n) / density, 1.0 / dimension);
+    return start_lattice(dimension, n, side).fits();
+  };
   const double density = static_cast<double>(n) / std::pow(box, dimension);
-  return density * std::pow(start_lattice(dimension, n, box).nearest, dimension) / (1.0 + 1e-6);
+  const double estimate =
+      density * std::pow(start_lattice(dimension, n, box).nearest / (1.0 + 1e-9), dimension);
+  double lo = estimate, hi = estimate;
+  for (double step = 1e-12; fits(hi) && step < 1.0; step *= 4.0) hi = estimate * (1.0 + step);
+  for (double step = 1e-12; !fits(lo) && step < 1.0; step *= 4.0) lo = estimate * (1.0 - step);
+  if (fits(hi) || !fits(lo)) return estimate;  // not bracketed: the estimate
+  while (std::nextafter(lo, hi) < hi) {
+    const double mid = lo + 0.5 * (hi - lo);
+    if (mid <= lo || mid >= hi) break;
+    (fits(mid) ? lo : hi) = mid;
+  }
+  return hi;
 }
 
 std::string too_dense_message(int dimension, std::int64_t n, double box) {
