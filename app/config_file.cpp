@@ -253,8 +253,10 @@ ConfigItems read_csv_header(std::istream& in, const std::string& path) {
     const auto eq = line.find(" = ");
     if (eq == std::string::npos || line.size() < 2) continue;
     const std::string key = trim(line.substr(1, eq - 1));
-    if (key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
-      continue;  // the title line
+    // The title line has words and spaces; a key is one word (a flag's name too, t-end, which
+    // --config takes as it takes t_end: skipped, an edited line would be dropped unseen).
+    if (key.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_-") != std::string::npos)
+      continue;
     items.emplace_back(key, words(line.substr(eq + 3)));
   }
   return items;

@@ -131,6 +131,10 @@ refused "--relax: value 20 is not allowed with method = dsmc.*\(the value is fro
   fail "theory --config of a run does not name the run's length it leaves out"
 refused "--config: run.csv: the run uses the TC model \(tc = 1e-04\), and sweep has no option for it" \
   sweep --config run.csv
+# A key spelled as its flag in a result header is a key (it was skipped as a title line).
+sed 's/^# tc = .*/&\n# t-end = 5/' run.csv >hyphen.csv
+refused "--config: hyphen.csv: key 't-end' sets --t-end again \(first as 't_end'\)" \
+  simulate --config hyphen.csv
 # An edited tc of -0 is no TC model; a negative one is out of range, not a TC model.
 sed 's/^# tc = .*/# tc = -0/' run.csv >minus_zero.csv
 "$bin" theory --config minus_zero.csv >/dev/null 2>&1 || fail "theory refused a run with tc = -0"
