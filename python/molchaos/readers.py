@@ -82,6 +82,9 @@ def _read_header(path):
         value = metadata["snapshot_times"]
         metadata["snapshot_times"] = [] if value == "" else [float(value)]
     if text and text[0].startswith("molchaos sweep summary"):
+        # A sweep of event-driven MD alone leaves its method out of the header (as a run's CSV
+        # leaves out a parameter at its default).
+        raw.setdefault("method", "edmd")
         for key, convert in _SWEEP_LISTS.items():
             if key in raw:
                 metadata[key] = [convert(w) for w in raw[key].split()]

@@ -186,4 +186,4 @@ def test_a_sweep_summary_lists_its_points_as_lists(molchaos_bin, tmp_path):
                     "1", "--out", str(out)], check=True, capture_output=True)
     frame, meta = molchaos.read_table(out)
     assert meta["density"] == [0.05] and meta["restitution"] == [0.9, 0.8]
-    assert meta["randomize"] == ["none"] and len(frame) == 2
+    assert meta["randomize"] == ["none"] and meta["method"] == ["edmd"] and len(frame) == 2
