@@ -69,8 +69,8 @@ Kind kind_of(const std::string& text) {
   return text.find("\n# version = ") != std::string::npos ? Kind::csv : Kind::toml;
 }
 
-// UTF-8 of a code point (a TOML \\uXXXX or \\UXXXXXXXX escape); throws for a surrogate or beyond
-// U+10FFFF, which name no character.
+// UTF-8 of a code point (TOML's escapes of four or eight hexadecimal digits); throws for a
+// surrogate or beyond U+10FFFF, which name no character.
 std::string utf8(unsigned long code, const std::string& where) {
   if (code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF))
     throw UsageError("--config", where + ": a \\u escape that names no character");

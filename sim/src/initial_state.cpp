@@ -34,10 +34,11 @@ StartLattice start_lattice(int dimension, std::int64_t n, double box) {
 }
 
 double densest_start(int dimension, std::int64_t n, double box) {
-  // Lattice distances scale with L ~ n^(-1/d): fits() ends near density n^... (nearest/(1 +
-  // 1e-9))^d. The bound printed is the check's own: the least density that fits() refuses, with
-  // the box side as box_side() computes it, found by bisection from that estimate (a bound
-  // computed apart from the check differed from it in the sixth digit).
+  // fits() holds while nearest > 1 + 1e-9, and lattice distances scale with the box side: the
+  // bound lies near density (nearest/(1 + 1e-9))^d at the density of `box`. The bound returned is
+  // the check's own, the least density that fits() refuses with the box side as box_side()
+  // computes it, found by bisection from that estimate (a bound computed apart from the check
+  // differed from it in the sixth digit).
   const auto fits = [&](double density) {
     const double side = std::pow(static_cast<double>(n) / density, 1.0 / dimension);
     return start_lattice(dimension, n, side).fits();

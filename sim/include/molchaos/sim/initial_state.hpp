@@ -19,7 +19,8 @@ struct StartLattice {
   bool fits() const { return nearest > 1.0 + 1e-9; }
 };
 StartLattice start_lattice(int dimension, std::int64_t n, double box);
-/// The highest density at which place_particles can start n particles (about that of this box).
+/// The least density at which place_particles cannot start n particles, every lower one near it
+/// starting (the bound near the density of `box`).
 double densest_start(int dimension, std::int64_t n, double box);
 /// "density X is too high to generate ... reaches n < Y for this N; close packing is Z".
 std::string too_dense_message(int dimension, std::int64_t n, double box);
