@@ -63,14 +63,10 @@ void validate(const Parameters& p) {
                  "[4, 100000000] with randomize = " + std::string(to_string(p.randomize)) +
                      " (the shuffle needs two particles besides the colliding pair)");
   const double n_max = close_packing_density(p.dimension);
-  if (!(p.density < n_max)) {
-    // Ten digits unless the value and the bound print alike (1.1547005383792517 is close
-    // packing itself): then to the digits that tell them apart.
-    const bool alike = number(p.density) == number(n_max);
-    out_of_range("density", alike ? round_trip_text(p.density) : number(p.density),
-                 "(0, " + (alike ? round_trip_text(n_max) : number(n_max)) +
-                     ") (close packing for dimension " + std::to_string(p.dimension) + ")");
-  }
+  if (!(p.density < n_max))
+    out_of_range("density", number(p.density),
+                 "(0, " + number(n_max) + ") (close packing for dimension " +
+                     std::to_string(p.dimension) + ")");
   for (double t : p.snapshot_times)
     if (!(t <= p.t_end))
       out_of_range("snapshot_times", number(t), "[0, t_end] = [0, " + number(p.t_end) + "]");
