@@ -7,6 +7,8 @@
 #include <string>
 
 #include "molchaos/sim/cell_grid.hpp"
+#include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/sim/parameters.hpp"
 
 namespace molchaos::sim {
 
@@ -60,12 +62,12 @@ double densest_start(int dimension, std::int64_t n, double box) {
 
 std::string too_dense_message(int dimension, std::int64_t n, double box) {
   const double density = static_cast<double>(n) / std::pow(box, dimension);
-  return "density " + std::to_string(density) +
+  return "density " + message_number(density) +
          " is too high to generate a non-overlapping initial state for N = " + std::to_string(n) +
          (dimension == 2 ? " disks (a staggered lattice with vacancies reaches n < "
                          : " spheres (a simple cubic lattice with vacancies reaches n < ") +
-         std::to_string(densest_start(dimension, n, box)) + " for this N; close packing is " +
-         std::to_string(dimension == 2 ? 2.0 / std::sqrt(3.0) : std::sqrt(2.0)) + ")";
+         message_number(densest_start(dimension, n, box)) + " for this N; close packing is " +
+         message_number(close_packing_density(dimension)) + ")";
 }
 
 // Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
