@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -30,21 +31,39 @@ std::string host_name() {
 
 std::string error_text(int error) { return std::strerror(error); }
 
+// The longest file name, in bytes, that the file system of path's directory takes.
+std::size_t name_max(const fs::path& path) {
+  const fs::path directory = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  const long max = ::pathconf(directory.c_str(), _PC_NAME_MAX);
+  return max > 0 ? static_cast<std::size_t>(max) : NAME_MAX;
+}
+
 }  // namespace
 
 std::string temporary_name(const std::string& path) {
   static thread_local std::mt19937_64 random{std::random_device{}()};
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(random()));
+  std::string suffix = k_marker;  // appended piecewise (GCC 12 warns falsely on literal + string)
+  suffix += host_name();
+  suffix += '.';
+  suffix += std::to_string(::getpid());
+  suffix += '.';
+  suffix += hex;
   const fs::path p(path);
-  std::string name = ".";  // appended piecewise (GCC 12 warns falsely on literal + string)
-  name += p.filename().string();
-  name += k_marker;
-  name += host_name();
-  name += '.';
-  name += std::to_string(::getpid());
-  name += '.';
-  name += hex;
+  std::string stem = p.filename().string();
+  // A name the file system takes must leave room for the suffix: the stem is cut, at the start
+  // of a UTF-8 character, so that the temporary's name fits too.
+  const std::size_t max = name_max(p);
+  const std::size_t room = max > suffix.size() + 1 ? max - suffix.size() - 1 : 0;
+  if (stem.size() > room) {
+    std::size_t cut = room;
+    while (cut > 0 && (static_cast<unsigned char>(stem[cut]) & 0xC0) == 0x80) --cut;
+    stem.resize(cut);
+  }
+  std::string name = ".";
+  name += stem;
+  name += suffix;
   return (p.parent_path() / name).string();
 }
 
@@ -118,6 +137,12 @@ void probe_writable(const std::string& path) {
     throw std::runtime_error("'" + path +
                              "' exists and is not a regular file (a device, FIFO, socket or "
                              "symlink); give a new name or a regular file");
+  // The temporary's name is cut to fit (temporary_name()), so a name too long is caught here.
+  if (const std::size_t bytes = fs::path(path).filename().string().size(); bytes > name_max(path))
+    throw std::runtime_error("cannot create " + path + ": its name is " + std::to_string(bytes) +
+                             " bytes, the file system takes at most " +
+                             std::to_string(name_max(path)) + " (" + error_text(ENAMETOOLONG) +
+                             ")");
   const std::string temporary = temporary_name(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0)

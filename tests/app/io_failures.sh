@@ -68,6 +68,20 @@ expect2() {
 expect2 --out simulate --particles 100 --t-end 1 --out /proc/run.csv
 expect2 --out simulate --particles 100 --t-end 1 --out /sys/run.csv
 expect2 --out simulate --particles 100 --t-end 1 --out "$(printf 'x%.0s' $(seq 300)).csv"
+expect2 --out simulate --particles 100 --t-end 1 --out "$(printf 'x%.0s' $(seq 252)).csv"
+# A name of the file system's longest (255 bytes) runs, its temporary's name cut to fit, the cut
+# at a character of a two-byte name; a snapshot name it implies that is longer is refused at once.
+for name in "$(printf 'x%.0s' $(seq 251)).csv" "$(printf 'é%.0s' $(seq 125)).csv"; do
+  "$bin" simulate --particles 100 --t-end 1 --relax 1 --quiet --out "$name" 2> err.txt ||
+    fail "a name of 255 bytes refused: $(cat err.txt)"
+  [ -s "$name" ] && [ -z "$(ls -A | grep molchaos-tmp)" ] || fail "the 255-byte run's file: $(ls -A)"
+  rm "$name"
+done
+expect2 --out simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 \
+  --out "$(printf 'x%.0s' $(seq 251)).csv"
+grep -q "snapshot0.csv: its name is 265 bytes, the file system takes at most 255" err.txt ||
+  fail "the over-long snapshot name not named: $(cat err.txt)"
+[ -z "$(ls -A | grep '^xxx')" ] || fail "a refused run left a file: $(ls -A)"
 expect2 --cache sweep --particles 200 --seeds 1 --quiet --cache /proc/cache
 expect2 --out reproduce --quick --seeds 1 --no-figures --out /proc/reproduced
 expect2 --cache reproduce --quick --seeds 1 --no-figures --out reproduced --cache /proc/cache

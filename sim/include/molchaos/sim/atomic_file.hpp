@@ -12,7 +12,8 @@
 
 namespace molchaos::sim {
 
-/// Temporary name for `path`: ".<name>.molchaos-tmp.<host>.<pid>.<random hex>" in its directory.
+/// Temporary name for `path`: ".<name>.molchaos-tmp.<host>.<pid>.<random hex>" in its directory,
+/// <name> cut short where the whole would be longer than the file system takes.
 /// Only names of this form are ever removed by remove_stale_temporaries().
 std::string temporary_name(const std::string& path);
 
@@ -48,8 +49,9 @@ void write_file_atomically(const std::string& path,
 
 /// Throws std::runtime_error unless `path` can take a file written atomically: it is no directory,
 /// not an existing non-regular file (a device, FIFO, socket or symlink, which the rename would
-/// replace), and a temporary file can be created (and is removed again) next to it. Run before
-/// any long work so that an unwritable output fails at once.
+/// replace), its name is not longer than the file system takes, and a temporary file can be
+/// created (and is removed again) next to it. Run before any long work so that an unwritable
+/// output fails at once.
 void probe_writable(const std::string& path);
 
 /// Removes this suite's temporary files in `directory` older than `min_age_seconds` whose writer
