@@ -315,7 +315,7 @@ CLI::Option* option_of(CLI::App* cmd, const std::string& key) {
 }
 
 // True for the options of the parameter table's list rows (snapshot_times), whose empty list is
-// their default, "none".
+// their default: no values.
 bool takes_empty_list(const CLI::Option* op) {
   for (const sim::ParameterInfo& info : sim::parameter_table())
     if (std::holds_alternative<std::vector<double> sim::Parameters::*>(info.field) &&
@@ -503,8 +503,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     set_by.emplace(op, key);
     if (values.empty()) {
       // An empty list leaves the option at its default: right for a list whose default is no
-      // values (snapshot_times, as --write-config and the CSV header write "none"); for any
-      // other option it would drop the key without a word.
+      // values (snapshot_times, which --write-config writes as [] and the CSV header as nothing
+      // after its '='); for any other option it would drop the key without a word.
       if (takes_empty_list(op)) continue;
       throw UsageError("--config",
                        path + ": key '" + key + "': " + op->get_name() +
