@@ -2,14 +2,10 @@
 // REPORT.html, fig4_A_of_eps.csv, a2_of_eps.csv. Runs are cached in <out>/cache, so an interrupted
 // reproduction resumes.
 #include <fmt/format.h>
-#include <signal.h>
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -19,6 +15,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "interrupt_signals.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/validation/report.hpp"
@@ -44,66 +41,32 @@ struct ReproduceCliOptions {
   bool quiet = false;
 };
 
-// SIGINT and SIGTERM. During the runs (and the analyses between them) their default action
-// stays: every finished run is in the cache already, written whole (temporary name, then rename),
-// so the handler only says so before the process ends. From the figures on, the handler records the
-// signal instead: the figure being rendered ends its gnuplot and removes its temporaries
-// (figures::RenderOptions::interrupt), and the command then ends by the signal's default action, so
-// that the parent sees the signal (a shell's exit status 128 + signal) as without the handler.
-std::atomic<bool> g_interrupt{false};
-std::atomic<bool> g_runs_done{false};
-volatile std::sig_atomic_t g_signal = 0;
-std::string g_runs_message;  // built before the handler is installed, not changed after
-static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
-
-extern "C" void on_reproduce_signal(int signal) {
-  if (!g_runs_done.load()) {
-    // write(), signal() and raise() are async-signal-safe.
-    [[maybe_unused]] const ssize_t written =
-        ::write(STDERR_FILENO, g_runs_message.data(), g_runs_message.size());
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
-    return;
-  }
-  g_signal = signal;
-  g_interrupt.store(true);
-}
-
-// A signal that was ignored when the command started (nohup, a background job of a shell without
-// job control) stays ignored. SA_RESTART: the runs' threads see no EINTR.
+// SIGINT and SIGTERM (interrupt_signals.hpp). During the runs (and the analyses between them) a
+// signal ends the command at once: every finished run is in the cache already, written whole
+// (temporary name, then rename), so the handler only says so. From the figures on, the signal is
+// recorded: the figure being rendered ends its gnuplot and removes its temporaries
+// (figures::RenderOptions::interrupt), and the command then ends by the signal's default action.
 void install_reproduce_signals(const std::string& cache_directory) {
-  g_runs_message = fmt::format(
+  interrupt_signals::install(fmt::format(
       "molchaos: reproduce interrupted during the runs and analyses; the cache {} keeps every "
       "finished run, and the same command continues from them\n",
-      cache_directory);
-  for (const int signal : {SIGINT, SIGTERM}) {
-    struct sigaction before {};
-    sigaction(signal, nullptr, &before);
-    if (before.sa_handler == SIG_IGN) continue;
-    struct sigaction action {};
-    action.sa_handler = on_reproduce_signal;
-    action.sa_flags = SA_RESTART;
-    sigemptyset(&action.sa_mask);
-    sigaction(signal, &action, nullptr);
-  }
+      cache_directory));
 }
 
 // Ends the command as the recorded signal would have: one line on stderr saying what it stopped,
-// then the signal's default action (std::_Exit only if that somehow returns).
+// then the signal's default action.
 [[noreturn]] void end_by_signal(const std::string& stopped, const std::string& cache_directory) {
-  const int signal = g_signal;
   std::cout.flush();
   std::fprintf(stderr,
                "molchaos: reproduce stopped by %s %s; the cache %s keeps every finished run, and "
                "the same command writes the figures and the report from it\n",
-               signal == SIGINT ? "SIGINT" : "SIGTERM", stopped.c_str(), cache_directory.c_str());
-  std::signal(signal, SIG_DFL);
-  std::raise(signal);
-  std::_Exit(128 + signal);
+               interrupt_signals::signal_number() == SIGINT ? "SIGINT" : "SIGTERM", stopped.c_str(),
+               cache_directory.c_str());
+  interrupt_signals::end_by_signal();
 }
 
 void stop_if_interrupted(const std::string& stopped, const std::string& cache_directory) {
-  if (g_interrupt.load()) end_by_signal(stopped, cache_directory);
+  if (interrupt_signals::requested().load()) end_by_signal(stopped, cache_directory);
 }
 
 // The command line as the report names it: the options that change what the report says. --out,
@@ -194,7 +157,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
         o.quick ? "quick look" : "paper scale", cfg.particles, cfg.restitutions.size(),
         cfg.densities.size(), cfg.seeds, sweep.cache_directory);
   auto results = validation::reproduce(cfg, sweep);
-  g_runs_done.store(true);
+  interrupt_signals::under_way().store(true);
   validation::withhold_undecidable_verdicts(results.claims, cfg.seeds);
 
   // From here on the folder's files are replaced: an earlier report there would describe the new
@@ -208,7 +171,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
   if (!o.no_figures) {
     figures::RenderOptions ro;
     ro.output_directory = o.out;
-    ro.interrupt = &g_interrupt;
+    ro.interrupt = &interrupt_signals::requested();
     figure_files = render_figures(results, ro, sweep.cache_directory);
   }
 #endif

@@ -4,9 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +21,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "interrupt_signals.hpp"
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/sim.hpp"
@@ -52,40 +51,17 @@ struct SimulateOptions {
   }
 };
 
-// SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an end;
-// during the relaxation, which has no checkpoint, they end the process at once as without the
-// handler (the run sets g_under_way when the relaxation is done).
-std::atomic<bool> g_interrupt{false};
-std::atomic<bool> g_under_way{false};
-volatile std::sig_atomic_t g_signal = 0;
-static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
-
-extern "C" void request_checkpoint(int signal) {
-  if (!g_under_way.load()) {
-    std::signal(signal, SIG_DFL);  // both async-signal-safe
-    std::raise(signal);
-    return;
-  }
-  g_signal = signal;
-  g_interrupt.store(true);
-}
-
-void install_checkpoint_signals() {
-  struct sigaction action {};
-  action.sa_handler = request_checkpoint;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGTERM, &action, nullptr);
-  sigaction(SIGINT, &action, nullptr);
-}
-
 // The run, or nothing when a signal interrupted it (the checkpoint is then written).
 std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
                                                const sim::ProgressReporter& progress) {
   sim::CheckpointOptions checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) {
-    install_checkpoint_signals();
-    checkpoints.interrupt = &g_interrupt;
-    checkpoints.under_way = &g_under_way;
+    // SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an
+    // end; during the relaxation, which has no checkpoint, they end the process at once (the run
+    // marks itself under way when the relaxation is done).
+    interrupt_signals::install();
+    checkpoints.interrupt = &interrupt_signals::requested();
+    checkpoints.under_way = &interrupt_signals::under_way();
   }
   try {
     return sim::run_with_checkpoints(options.parameters, progress, checkpoints);
@@ -295,7 +271,8 @@ void run_simulate(const SimulateOptions& options) {
   const std::optional<sim::RunResult> run = run_checkpointed(options, progress);
   if (show_progress) std::fprintf(stderr, "\n");
   if (!run)
-    throw Interrupted("simulate: stopped by signal " + std::to_string(g_signal) +
+    throw Interrupted("simulate: stopped by signal " +
+                      std::to_string(interrupt_signals::signal_number()) +
                       "; checkpoint written to " + checkpoints.path + "; continue with --restart " +
                       checkpoints.path);
   const sim::RunResult& result = *run;
