@@ -9,10 +9,11 @@
 #include <fmt/ranges.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <ctime>
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -22,6 +23,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "interrupt_signals.hpp"
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/reference_values.hpp"
 #include "molchaos/validation/ensemble.hpp"
@@ -44,6 +46,38 @@ struct BenchOptions {
   int threads = 0;
   std::string simulation_flag_given;  // --particles, --work or --threads: for --simulation only
 };
+
+// The table, then its figures, with SIGINT and SIGTERM held back (interrupt_signals.hpp): the
+// table is written whole, a figure being drawn ends its gnuplot and removes its temporaries, and
+// the command then ends by the signal, saying what is in place. During the measurements a signal
+// ends the command at once: nothing is written until they are done. `draw(ro)` draws the figures.
+template <class Draw>
+void write_table_and_figures(const BenchOptions& o, const std::string& table,
+                             const std::string& csv, [[maybe_unused]] Draw&& draw) {
+  interrupt_signals::under_way().store(true);
+  const std::string path = (std::filesystem::path(o.out) / table).string();
+  validation::write_file_atomically(path, csv);  // first: a figure that cannot be drawn keeps it
+  std::string stopped = "after writing " + path;
+#ifdef MOLCHAOS_HAVE_FIGURES
+  figures::RenderOptions ro;
+  ro.output_directory = o.out;
+  ro.interrupt = &interrupt_signals::requested();
+  try {
+    draw(ro);
+  } catch (const figures::Interrupted& e) {
+    stopped =
+        std::string("while ") + e.what() + " (its temporary files removed; " + path + " written)";
+  }
+#endif
+  if (interrupt_signals::requested().load()) {
+    std::cout.flush();
+    std::cerr << "molchaos: bench stopped by "
+              << (interrupt_signals::signal_number() == SIGINT ? "SIGINT " : "SIGTERM ") << stopped
+              << '\n';
+    interrupt_signals::end_by_signal();
+  }
+  interrupt_signals::under_way().store(false);
+}
 
 double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
@@ -120,16 +154,13 @@ void bench_theory(const BenchOptions& o) {
                          r.error.reached, r.error.estimated, r.evaluations);
     }
   }
-  // The table first: a figure that cannot be drawn (no gnuplot, a full disk) keeps the measurement.
-  validation::write_file_atomically(
-      (std::filesystem::path(o.out) / "work_precision_theory.csv").string(), csv);
+  write_table_and_figures(o, "work_precision_theory.csv", csv, [&](const auto& ro) {
 #ifdef MOLCHAOS_HAVE_FIGURES
-  figures::RenderOptions ro;
-  ro.output_directory = o.out;
-  for (std::size_t k = 0; k < figures_data.size(); ++k)
-    figures::render_work_precision(figures_data[k], ro,
-                                   fmt::format("work_precision_theory_d{}", k + 2));
+    for (std::size_t k = 0; k < figures_data.size(); ++k)
+      figures::render_work_precision(figures_data[k], ro,
+                                     fmt::format("work_precision_theory_d{}", k + 2));
 #endif
+  });
 }
 
 // Seeds for system size n: the same work (particle-runs) for every N, at least k_min_seeds.
@@ -265,14 +296,11 @@ void bench_simulation(const BenchOptions& o) {
     std::cout << line << '\n';
     csv += "# " + line + '\n';
   }
-  // The table first: a figure that cannot be drawn (no gnuplot, a full disk) keeps the measurement.
-  validation::write_file_atomically(
-      (std::filesystem::path(o.out) / "work_precision_simulation.csv").string(), csv);
+  write_table_and_figures(o, "work_precision_simulation.csv", csv, [&](const auto& ro) {
 #ifdef MOLCHAOS_HAVE_FIGURES
-  figures::RenderOptions ro;
-  ro.output_directory = o.out;
-  figures::render_simulation_cost(data, ro);
+    figures::render_simulation_cost(data, ro);
 #endif
+  });
 }
 
 void run_bench(const BenchOptions& o) {
@@ -282,6 +310,7 @@ void run_bench(const BenchOptions& o) {
   reject_repeated_values("--particles", o.particles,
                          "each N once (the pooled scatter takes every N's runs as independent)");
   require_usable_directory("--out", o.out);  // created, and a file written in it, before the work
+  interrupt_signals::install();
   if (o.theory) bench_theory(o);
   if (o.simulation) bench_simulation(o);
 }

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Usage: bench_interrupt.sh MOLCHAOS
+# SIGTERM and SIGINT while `bench` draws its figures: the gnuplot under way is ended, no temporary
+# is left beside the figures, the table is in place, and the exit status is 128 + signal with one
+# line on stderr naming what stopped. The next run into the same folder writes every file.
+set -u
+set -m  # job control: a background job must not start with SIGINT ignored
+bin=$(realpath "$1")
+. "$(dirname "$0")/../scratch.sh"
+enter_scratch_folder
+command -v gnuplot >/dev/null || fail "no gnuplot on PATH"
+
+args=(bench --simulation --particles 100 --work 1000 --threads 1)
+temporaries() { ls -A "$1" 2>/dev/null | grep 'molchaos-tmp'; }
+for signal in TERM INT; do
+  out=$PWD/stopped_$signal
+  "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.err" &
+  pid=$!
+  for _ in $(seq 3000); do  # up to 30 s for the first figure's temporaries
+    [ -n "$(temporaries "$out")" ] && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.01
+  done
+  kill -"$signal" "$pid" || fail "SIG$signal: bench ended before its figures"
+  wait "$pid"
+  status=$?
+  expected=$((128 + $(kill -l "$signal")))
+  [ "$status" -eq "$expected" ] || fail "SIG$signal: exit status $status, expected $expected"
+  grep -Eq "^molchaos: bench stopped by SIG$signal (while rendering|after writing) .*work_precision_simulation\.csv" \
+    "$signal.err" || fail "SIG$signal: stderr says $(cat "$signal.err")"
+  echo "SIG$signal: status $status; $(tail -n 1 "$signal.err")"
+  sleep 1  # an orphaned gnuplot would go on writing its temporaries
+  [ -z "$(temporaries "$out")" ] || fail "SIG$signal: temporaries left: $(temporaries "$out" | tr '\n' ' ')"
+  if pgrep -f -- "$out/" >/dev/null; then
+    pgrep -a -f -- "$out/"
+    fail "SIG$signal: gnuplot still runs after bench ended"
+  fi
+  [ -s "$out/work_precision_simulation.csv" ] || fail "SIG$signal: the table is not in place"
+
+  "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.again.err" ||
+    { cat "$signal.again.err"; fail "SIG$signal: the run after the interrupt failed"; }
+  [ -z "$(temporaries "$out")" ] || fail "SIG$signal: temporaries after the second run"
+  for f in csv png pdf gp; do
+    [ -s "$out/work_precision_simulation.$f" ] || fail "SIG$signal: no .$f after the second run"
+  done
+done
+echo "ok: an interrupted bench leaves no temporary and no gnuplot, and its table in place"
