@@ -177,11 +177,8 @@ void run_simulate(const SimulateOptions& options) {
     require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
   if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
   if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
-  if (!options.pair_correlations.empty()) {
+  if (!options.pair_correlations.empty())
     require_writable_file("--pair-correlations", options.pair_correlations, false);
-    if (p.snapshot_times.empty())
-      throw UsageError("--pair-correlations", "needs --snapshot-times (the times to measure at)");
-  }
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
   {
@@ -241,6 +238,8 @@ void run_simulate(const SimulateOptions& options) {
        {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz}})
     if (!path->empty() && p.snapshot_times.empty())
       throw UsageError(flag, "needs --snapshot-times (the times of the configurations to write)");
+  if (!options.pair_correlations.empty() && p.snapshot_times.empty())
+    throw UsageError("--pair-correlations", "needs --snapshot-times (the times to measure at)");
   if (p.method == sim::Method::dsmc)
     for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
                                      std::pair{"--restart", &checkpoints.restart}})
