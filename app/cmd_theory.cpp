@@ -10,6 +10,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <utility>
 #include <vector>
@@ -161,7 +162,9 @@ struct TheoryResults {
   std::vector<theory::PaperCheck> coefficient_rows, prefactor_rows;
   theory::CorrelationRange b_range;
   theory::HcsSonine sonine;
-  std::array<theory::Estimate, 4> A_by_level;  ///< A with each level's a2, a3 (and the given b)
+  /// A with each level's a2, a3 and the given b; none where that μ2 is not positive beyond its
+  /// error (the b range makes sure of it for the first level only): the gas would not cool.
+  std::array<std::optional<theory::Estimate>, 4> A_by_level;
   theory::ContactResponse contact, contact_traceless;
   double seconds = 0.0;
 };
@@ -215,8 +218,9 @@ TheoryResults compute_theory(const TheoryOptions& o) {
     };
     const double ratio_error =
         ratio.error + slope(h, 0.0) * lv[i]->a2.error + slope(0.0, h) * lv[i]->a3.error;
-    r.A_by_level[i] =
-        theory::cooling_prefactor_A(o.dimension, o.density, 1.0, {ratio.value, ratio_error});
+    if (ratio.value > ratio_error)
+      r.A_by_level[i] =
+          theory::cooling_prefactor_A(o.dimension, o.density, 1.0, {ratio.value, ratio_error});
   }
   // The first level is the header's prediction (first-Sonine a2, a3 = 0, the given b): one
   // quantity, so one value and one error, the prediction's (which carries the quadrature's
@@ -306,7 +310,7 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
                            {"a2", to_json(lv[i]->a2)},
                            {"a3", to_json(lv[i]->a3)},
                            {"mu2_ratio", to_json(lv[i]->mu2_ratio)},
-                           {"A", to_json(r.A_by_level[i])}});
+                           {"A", r.A_by_level[i] ? to_json(*r.A_by_level[i]) : nullptr}});
   j["contact_response"] = {{"printed_dyad", to_json(r.contact)},
                            {"traceless_dyad", to_json(r.contact_traceless)}};
   add_hydrodynamics_json(j, o.dimension, o.restitution, o.density, h);
@@ -380,12 +384,15 @@ void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
       "{:>22} {:>22}\n",
       o.correlation_b, "level", "a2", "a3", "A");
   const auto lv = levels(r.sonine);
-  for (std::size_t i = 0; i < lv.size(); ++i)
+  for (std::size_t i = 0; i < lv.size(); ++i) {
+    const auto& A = r.A_by_level[i];
     std::cout << fmt::format(
-        "{:<14} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e}\n", lv[i]->level,
+        "{:<14} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e} {:>22}\n", lv[i]->level,
         fixed(lv[i]->a2.value, lv[i]->a2.error, 10), lv[i]->a2.error,
         fixed(lv[i]->a3.value, lv[i]->a3.error, 10), lv[i]->a3.error,
-        fixed(r.A_by_level[i].value, r.A_by_level[i].error, 9), r.A_by_level[i].error);
+        A ? fmt::format("{:>13} ± {:<6.1e}", fixed(A->value, A->error, 9), A->error)
+          : std::string("none: μ2 ≤ 0, no cooling"));
+  }
 }
 
 void print_contact_text(const theory::ContactResponse& c) {

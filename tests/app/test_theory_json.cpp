@@ -85,3 +85,25 @@ BOOST_AUTO_TEST_CASE(sonine_levels_contact_response_and_b_range) {
     BOOST_TEST(j.at("tau0_error").get<double>() >= 0.0);
   }
 }
+
+// Near the end of b's range, where the first level's μ2 is just positive, a level whose a2 and a3
+// put μ2 at or below zero has no A (null, not a negative cooling time); every A given is positive.
+BOOST_AUTO_TEST_CASE(a_level_that_does_not_cool_has_no_A) {
+  for (int d : {2, 3}) {
+    const std::string state = "--dim " + std::to_string(d) + " --restitution 0.9";
+    const double upper = run(state).at("b_range").at("upper").get<double>();
+    char b[32];
+    std::snprintf(b, sizeof b, "%.17g", upper - 1e-9);
+    const auto j = run(state + " --b " + b);
+    int without = 0;
+    for (const auto& level : j.at("sonine")) {
+      if (level.at("A").is_null()) {
+        ++without;
+        continue;
+      }
+      BOOST_TEST(level.at("A").at("value").get<double>() > 0.0);
+    }
+    BOOST_TEST(!j.at("sonine").at(0).at("A").is_null());  // the range's own level
+    BOOST_TEST(without >= 1);
+  }
+}
