@@ -203,10 +203,11 @@ inline void require_usable_directory(const std::string& flag, const std::string&
   }
 }
 
-/// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (a
-/// mistyped path makes no folders) and is writable, and `path` is not a directory or special
-/// file.
-inline void require_writable_file(const std::string& flag, const std::string& path) {
+/// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (or,
+/// with `create_parent`, is created here, and a file written in it: permissions do not show /proc
+/// to root) and is writable, and `path` is not a directory or special file.
+inline void require_writable_file(const std::string& flag, const std::string& path,
+                                  bool create_parent) {
   namespace fs = std::filesystem;
   if (path.empty()) throw UsageError(flag, "empty file name");
   const auto probe = [&] {
@@ -223,8 +224,11 @@ inline void require_writable_file(const std::string& flag, const std::string& pa
       fs::exists(status) && !fs::is_regular_file(status))
     probe();
   const fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty() && !fs::exists(parent, ec))
-    throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
+  if (!parent.empty() && !fs::exists(parent, ec)) {
+    if (!create_parent)
+      throw UsageError(flag, "directory '" + parent.string() + "' does not exist");
+    require_usable_directory(flag, parent.string());
+  }
   require_writable_directory(flag, parent.string());
   probe();
 }

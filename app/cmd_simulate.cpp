@@ -172,15 +172,15 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
 
 void run_simulate(const SimulateOptions& options) {
   const sim::Parameters& p = options.parameters;
-  require_writable_file("--out", options.out);
+  require_writable_file("--out", options.out, /*create_parent=*/false);
   for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
-    require_writable_file("--out", snapshot_path(options.out, k));
-  if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory);
-  if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz);
+    require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
+  if (!options.trajectory.empty()) require_writable_file("--trajectory", options.trajectory, false);
+  if (!options.xyz.empty()) require_writable_file("--xyz", options.xyz, false);
   if (!options.pair_correlations.empty())
-    require_writable_file("--pair-correlations", options.pair_correlations);
+    require_writable_file("--pair-correlations", options.pair_correlations, false);
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
-  if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path);
+  if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
   {
     // Every file the run writes, and the checkpoint it continues (which only --checkpoint may
     // replace: the usual way to go on from where a run stopped).
@@ -249,7 +249,7 @@ void run_simulate(const SimulateOptions& options) {
                          "with --method edmd");
 
   if (!options.write_config.empty())
-    require_writable_file("--write-config", options.write_config);
+    require_writable_file("--write-config", options.write_config, false);
 
   const bool show_progress = !options.quiet && ::isatty(::fileno(stderr)) != 0;
   sim::ProgressReporter progress;

@@ -109,9 +109,8 @@ void run_sweep_command(SweepCliOptions& o) {
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("sweep", e.what());
   }
-  // Only a sweep that will run creates a folder: its cache. The summary's folder must exist, as
-  // every output file's must (simulate): a mistyped path makes no tree of folders.
-  if (!o.out.empty()) require_writable_file("--out", o.out);
+  // Only a sweep that will run creates folders: its cache, and the folder of its summary.
+  if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
   if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   validation::SweepOptions so;
   so.cache_directory = o.cache;
