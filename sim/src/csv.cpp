@@ -68,11 +68,12 @@ void write_parameter_lines(const Parameters& p, std::ostream& out) {
 
 void write_csv(const RunResult& r, std::ostream& out) {
   const Parameters& p = r.parameters;
+  const char* particles = p.dimension == 2 ? "disks" : "spheres";
   out << k_run_title
       << (p.method == Method::dsmc
-              ? ": DSMC of the homogeneous Enskog-Boltzmann equation of inelastic hard spheres "
-                "(sigma = m = 1, T0 = 1)\n"
-              : ": event-driven MD of inelastic hard spheres (sigma = m = 1, T0 = 1)\n")
+              ? ": DSMC of the homogeneous Enskog-Boltzmann equation of inelastic hard "
+              : ": event-driven MD of inelastic hard ")
+      << particles << " (sigma = m = 1, T0 = 1)\n"
       << "# version = " << r.version << "\n";
   write_parameter_lines(p, out);
   out << "# stop_reason = " << stop_message(r) << "\n"
