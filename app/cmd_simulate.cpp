@@ -55,11 +55,12 @@ struct SimulateOptions {
 std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
                                                const sim::ProgressReporter& progress) {
   sim::CheckpointOptions checkpoints = options.checkpoints;
+  // SIGTERM (a batch system's wall-time limit) and SIGINT: during the run, with a checkpoint
+  // file, they ask for a checkpoint and an end (the run marks itself under way once the
+  // relaxation, which has no checkpoint, is done); without one, and during the relaxation, they
+  // end the process at once, with nothing written. While the outputs are written they wait.
+  interrupt_signals::install();
   if (!checkpoints.path.empty()) {
-    // SIGTERM (a batch system's wall-time limit) and SIGINT ask the run for a checkpoint and an
-    // end; during the relaxation, which has no checkpoint, they end the process at once (the run
-    // marks itself under way when the relaxation is done).
-    interrupt_signals::install();
     checkpoints.interrupt = &interrupt_signals::requested();
     checkpoints.under_way = &interrupt_signals::under_way();
   }
@@ -130,22 +131,14 @@ void remove_earlier_snapshots(const SimulateOptions& o, std::size_t from,
 // Every output of the run, written as one (sim::StagedFiles): all files or none, and a full disk
 // leaves the files of a run before in place. Written with the results, so that a run refused on
 // the way (a checkpoint of other parameters) or interrupted leaves no file. SIGINT and SIGTERM
-// wait until the files are in place (a signal's default end would leave temporaries behind);
-// temporaries of a writer killed outright are removed by the next run (their age rule in
-// sim::remove_stale_temporaries).
+// are recorded while the files are written (a signal's default end would leave temporaries
+// behind), and run_simulate ends by them once the files are in place; temporaries of a writer
+// killed outright are removed by the next run (their age rule in sim::remove_stale_temporaries).
 // Snapshot files beyond the run's own that the run it replaces wrote (of times this one did not
 // reach, or more snapshot times) are removed (remove_earlier_snapshots).
 void write_outputs(const SimulateOptions& options, const sim::RunResult& result) {
   const sim::Parameters& p = options.parameters;
-  sigset_t signals, before;
-  sigemptyset(&signals);
-  sigaddset(&signals, SIGINT);
-  sigaddset(&signals, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &signals, &before);
-  struct Unblock {
-    const sigset_t* mask;
-    ~Unblock() { pthread_sigmask(SIG_SETMASK, mask, nullptr); }
-  } unblock{&before};
+  interrupt_signals::under_way().store(true);
   for (const std::string& path : options.written_files())
     if (!path.empty()) {
       const std::string directory = std::filesystem::path(path).parent_path().string();
@@ -280,6 +273,11 @@ void run_simulate(const SimulateOptions& options) {
   std::fprintf(stderr, "simulate: %llu collisions in %.2f s, stop: %s, wrote %s\n",
                static_cast<unsigned long long>(result.collisions), result.wall_seconds,
                sim::stop_message(result).c_str(), options.out.c_str());
+  if (interrupt_signals::requested().load()) {  // came while the outputs were written
+    std::fprintf(stderr, "simulate: stopped by %s once its outputs were complete\n",
+                 interrupt_signals::signal_number() == SIGINT ? "SIGINT" : "SIGTERM");
+    interrupt_signals::end_by_signal();
+  }
   // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
   // for: the files say so in their rows (none in an empty --xyz file, a --pair-correlations
   // table without rows), and this line at once.

@@ -140,24 +140,33 @@ grep -qx '# seed = 1' ext.snapshot0.csv || fail "ext.csv's snapshot was changed"
 grep -q '0 of the 1 snapshot times reached' early.err || fail "no note of the snapshots not reached: $(cat early.err)"
 echo "ok: snapshot paths"
 
-# 9. A signal while the outputs are written: it waits until they are all in place, and no
-# temporary is left (before, the CSV was in place, the rest missing, a temporary half-written).
+# 9. A signal while the outputs are written: it waits until they are all in place, no temporary
+# is left (before, the CSV was in place, the rest missing, a temporary half-written), and the
+# command then ends by the signal, saying its outputs are complete: with a checkpoint file too
+# (the signal came after the run, whose checkpoint would repeat it; before, exit 0 without a word).
 snapshot_times=$(seq -s ' ' 0 0.05 1)
-"$bin" simulate --particles 20000 --density 0.1 --relax 0 --t-end 1 --quiet \
-  --snapshot-times $snapshot_times --xyz sig.xyz --out sig.csv 2>/dev/null &
-pid=$!
-# SIGTERM: a script's background job ignores SIGINT. The output phase is known by a temporary
-# with content (the checks of the outputs at the start make empty ones).
-for _ in $(seq 4000); do
-  [ -n "$(find . -maxdepth 1 -name '.sig*molchaos-tmp*' -size +0 2>/dev/null)" ] && break
-  kill -0 $pid 2>/dev/null || break
-  sleep 0.002
+for checkpoint in "" "--checkpoint sig.ckpt"; do
+  rm -f sig.csv sig.xyz sig.snapshot*.csv
+  # shellcheck disable=SC2086
+  "$bin" simulate --particles 20000 --density 0.1 --relax 0 --t-end 1 --quiet $checkpoint \
+    --snapshot-times $snapshot_times --xyz sig.xyz --out sig.csv 2>sig.err &
+  pid=$!
+  # SIGTERM: a script's background job ignores SIGINT. The output phase is known by a temporary
+  # with content (the checks of the outputs at the start make empty ones).
+  for _ in $(seq 4000); do
+    [ -n "$(find . -maxdepth 1 -name '.sig*molchaos-tmp*' -size +0 2>/dev/null)" ] && break
+    kill -0 $pid 2>/dev/null || break
+    sleep 0.002
+  done
+  kill -TERM $pid 2>/dev/null
+  wait $pid
+  status=$?
+  [ -z "$(ls -A | grep molchaos-tmp || true)" ] || fail "temporaries left by SIGTERM: $(ls -A)"
+  [ -e sig.csv ] && [ -e sig.xyz ] && [ "$(ls sig.snapshot*.csv | wc -l)" -eq 21 ] ||
+    fail "SIGTERM while writing left an incomplete set: $(ls sig* 2>/dev/null)"
+  [ "$status" -eq 143 ] && grep -qx 'simulate: stopped by SIGTERM once its outputs were complete' sig.err ||
+    fail "SIGTERM while writing ($checkpoint): status $status, $(cat sig.err)"
 done
-kill -TERM $pid 2>/dev/null
-wait $pid
-[ -z "$(ls -A | grep molchaos-tmp || true)" ] || fail "temporaries left by SIGTERM: $(ls -A)"
-[ -e sig.csv ] && [ -e sig.xyz ] && [ "$(ls sig.snapshot*.csv | wc -l)" -eq 21 ] ||
-  fail "SIGTERM while writing left an incomplete set: $(ls sig* 2>/dev/null)"
 echo "ok: a signal while the outputs are written"
 
 # 2. Full disk: exit 1, nothing half-written, no temporary left, the earlier run's file in place.
