@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <climits>
@@ -54,7 +55,11 @@ std::string temporary_name(const std::string& path) {
   std::string stem = p.filename().string();
   // A name the file system takes must leave room for the suffix: the stem is cut, at the start
   // of a UTF-8 character, so that the temporary's name fits too.
-  const std::size_t max = name_max(p);
+  // Within the longest path too (PATH_MAX bytes with its terminating zero), which the final
+  // name's path may come close to.
+  const std::size_t directory = p.parent_path().empty() ? 0 : p.parent_path().string().size() + 1;
+  const std::size_t path_room = PATH_MAX - 1 > directory ? PATH_MAX - 1 - directory : 0;
+  const std::size_t max = std::min(name_max(p), path_room);
   const std::size_t room = max > suffix.size() + 1 ? max - suffix.size() - 1 : 0;
   if (stem.size() > room) {
     std::size_t cut = room;
@@ -169,7 +174,7 @@ void remove_stale_temporaries(const std::string& directory, double min_age_secon
     const std::string pid_text = rest.substr(dot1 + 1, dot2 - dot1 - 1);
     // A process id has at most 7 digits (Linux's pid_max is at most 2^22): a longer one is not
     // ours (and would not fit the int that kill() takes).
-    if (pid_text.empty() || pid_text.size() > 9 ||
+    if (pid_text.empty() || pid_text.size() > 7 ||
         pid_text.find_first_not_of("0123456789") != std::string::npos)
       continue;
     if (rest.substr(dot2 + 1).find_first_not_of("0123456789abcdef") != std::string::npos) continue;
@@ -177,7 +182,9 @@ void remove_stale_temporaries(const std::string& directory, double min_age_secon
     if (ec) continue;
     const double age = std::chrono::duration<double>(now - modified).count();
     if (age < min_age_seconds) continue;
-    const bool writer_alive = writer_host == host && ::kill(std::stoi(pid_text), 0) == 0;
+    // kill() fails with EPERM for a live process of another user: alive all the same.
+    const bool writer_alive =
+        writer_host == host && (::kill(std::stoi(pid_text), 0) == 0 || errno == EPERM);
     if (writer_alive || (writer_host != host && age < 86400.0)) continue;
     fs::remove(entry.path(), ec);
   }

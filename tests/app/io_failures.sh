@@ -57,6 +57,21 @@ touch -d '2 days ago' "ckdir/.c.ckpt.molchaos-tmp.$host.4000000.0123456789abcdef
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out outdir/o.csv --checkpoint ckdir/c.ckpt \
   --checkpoint-interval 1 2>cleaner.err || fail "simulate beside stale temporaries: $(cat cleaner.err)"
 [ -z "$(ls -A ckdir | grep molchaos-tmp || true)" ] || fail "a stale temporary beside the checkpoint stayed"
+# A live writer of another user (kill() says EPERM) is alive: its temporary stays, however old.
+if [ "$(id -u)" -eq 0 ] && command -v setpriv >/dev/null; then
+  chmod 755 .  # the scratch folder is the owner's alone
+  mkdir -m 777 shared
+  sleep 60 & sleeper=$!
+  touch -d '2 hours ago' "shared/.big.h5.molchaos-tmp.$host.$sleeper.0123456789abcdef"
+  setpriv --reuid=65534 --regid=65534 --clear-groups \
+    "$bin" simulate --particles 100 --t-end 1 --relax 1 --quiet --out shared/o.csv 2>other.err
+  status=$?
+  kill $sleeper
+  [ "$status" -eq 0 ] || fail "simulate as another user: $(cat other.err)"
+  [ -e "shared/.big.h5.molchaos-tmp.$host.$sleeper.0123456789abcdef" ] ||
+    fail "the temporary of another user's live writer was removed"
+  rm -rf shared
+fi
 echo "ok: the cleaner removes killed writers' temporaries beside every output"
 
 # 3. Unwritable outputs fail before the work, exit 2 naming the flag.
@@ -77,6 +92,12 @@ for name in "$(printf 'x%.0s' $(seq 251)).csv" "$(printf 'é%.0s' $(seq 125)).cs
   [ -s "$name" ] && [ -z "$(ls -A | grep molchaos-tmp)" ] || fail "the 255-byte run's file: $(ls -A)"
   rm "$name"
 done
+# A path near the longest one (PATH_MAX, 4096 bytes): its temporary's name is cut to fit it too.
+deep=.; for _ in $(seq 20); do deep=$deep/$(printf 'd%.0s' $(seq 200)); done
+mkdir -p "$deep"
+"$bin" simulate --particles 100 --t-end 1 --relax 1 --quiet --out "$(realpath "$deep")/a_long_path.csv" 2> err.txt ||
+  fail "a path of $(( ${#PWD} + ${#deep} + 16 )) bytes refused: $(cut -c 1-200 err.txt)"
+rm -rf ./ddd*
 expect2 --out simulate --particles 100 --t-end 1 --relax 1 --snapshot-times 0.5 \
   --out "$(printf 'x%.0s' $(seq 251)).csv"
 grep -q "snapshot0.csv: its name is 265 bytes, the file system takes at most 255" err.txt ||
