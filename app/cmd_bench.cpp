@@ -50,11 +50,19 @@ struct BenchOptions {
 // The table, then its figures, with SIGINT and SIGTERM held back (interrupt_signals.hpp): the
 // table is written whole, a figure being drawn ends its gnuplot and removes its temporaries, and
 // the command then ends by the signal, saying what is in place. During the measurements a signal
-// ends the command at once: nothing is written until they are done. `draw(ro)` draws the figures.
+// ends the command at once: nothing is written until they are done. `draw(ro)` draws the figures
+// named `figures` (file names without extension); an earlier run's files of them are removed
+// first, so that an interrupted run leaves no figure of other measurements beside its table.
 template <class Draw>
 void write_table_and_figures(const BenchOptions& o, const std::string& table,
-                             const std::string& csv, [[maybe_unused]] Draw&& draw) {
+                             const std::string& csv, const std::vector<std::string>& figures,
+                             [[maybe_unused]] Draw&& draw) {
   interrupt_signals::under_way().store(true);
+  for (const std::string& figure : figures)
+    for (const char* extension : {".png", ".pdf", ".gp"}) {
+      std::error_code ignored;
+      std::filesystem::remove(std::filesystem::path(o.out) / (figure + extension), ignored);
+    }
   const std::string path = (std::filesystem::path(o.out) / table).string();
   validation::write_file_atomically(path, csv);  // first: a figure that cannot be drawn keeps it
   std::string stopped = "after writing " + path;
@@ -154,11 +162,13 @@ void bench_theory(const BenchOptions& o) {
                          r.error.reached, r.error.estimated, r.evaluations);
     }
   }
-  write_table_and_figures(o, "work_precision_theory.csv", csv, [&](const auto& ro) {
+  std::vector<std::string> figure_names;
+  for (std::size_t k = 0; k < figures_data.size(); ++k)
+    figure_names.push_back(fmt::format("work_precision_theory_d{}", k + 2));
+  write_table_and_figures(o, "work_precision_theory.csv", csv, figure_names, [&](const auto& ro) {
 #ifdef MOLCHAOS_HAVE_FIGURES
     for (std::size_t k = 0; k < figures_data.size(); ++k)
-      figures::render_work_precision(figures_data[k], ro,
-                                     fmt::format("work_precision_theory_d{}", k + 2));
+      figures::render_work_precision(figures_data[k], ro, figure_names[k]);
 #endif
   });
 }
@@ -298,7 +308,13 @@ void bench_simulation(const BenchOptions& o) {
     std::cout << line << '\n';
     csv += "# " + line + '\n';
   }
-  write_table_and_figures(o, "work_precision_simulation.csv", csv, [&](const auto& ro) {
+#ifdef MOLCHAOS_HAVE_FIGURES
+  const std::vector<std::string> figure_names{figures::k_simulation_cost_figure};
+#else
+  const std::vector<std::string> figure_names;
+#endif
+  write_table_and_figures(o, "work_precision_simulation.csv", csv, figure_names,
+                          [&](const auto& ro) {
 #ifdef MOLCHAOS_HAVE_FIGURES
     figures::render_simulation_cost(data, ro);
 #endif

@@ -15,7 +15,7 @@ RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionD
                                       const RenderOptions& options) {
   detail::require_non_empty("SimulationWorkPrecisionData.points", data.points.size());
   detail::FigureScript script;
-  script.basename = "work_precision_simulation";
+  script.basename = k_simulation_cost_figure;
   script.description =
       "Simulation work-precision: relative standard error of A against CPU seconds, per N.";
   detail::begin_log_log(script, data.title, "CPU seconds spent on the ensemble",

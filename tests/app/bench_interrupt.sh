@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Usage: bench_interrupt.sh MOLCHAOS
 # SIGTERM and SIGINT while `bench` draws its figures: the gnuplot under way is ended, no temporary
-# is left beside the figures, the table is in place, and the exit status is 128 + signal with one
-# line on stderr naming what stopped. The next run into the same folder writes every file.
+# is left beside the figures, the table is in place and no figure of an earlier run beside it,
+# and the exit status is 128 + signal with one line on stderr naming what stopped. The next run
+# into the same folder writes every file.
 set -u
 set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1")
@@ -14,6 +15,12 @@ args=(bench --simulation --particles 100 --work 1000 --threads 1)
 temporaries() { ls -A "$1" 2>/dev/null | grep 'molchaos-tmp'; }
 for signal in TERM INT; do
   out=$PWD/stopped_$signal
+  # An earlier run of other measurements in the folder: its figures must not stay beside the new
+  # table.
+  "$bin" bench --simulation --particles 200 --work 1000 --threads 1 --out "$out" >/dev/null 2>&1 ||
+    fail "SIG$signal: the earlier run"
+  earlier=$(cd "$out" && md5sum work_precision_simulation.png work_precision_simulation.pdf \
+    work_precision_simulation.gp | cut -d' ' -f1)
   "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.err" &
   pid=$!
   for _ in $(seq 3000); do  # up to 30 s for the first figure's temporaries
@@ -36,6 +43,11 @@ for signal in TERM INT; do
     fail "SIG$signal: gnuplot still runs after bench ended"
   fi
   [ -s "$out/work_precision_simulation.csv" ] || fail "SIG$signal: the table is not in place"
+  for f in png pdf gp; do
+    [ -e "$out/work_precision_simulation.$f" ] || continue
+    ! grep -qx "$(md5sum <"$out/work_precision_simulation.$f" | cut -d' ' -f1)" <<<"$earlier" ||
+      fail "SIG$signal: the earlier run's .$f stayed beside the new table"
+  done
 
   "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.again.err" ||
     { cat "$signal.again.err"; fail "SIG$signal: the run after the interrupt failed"; }

@@ -72,8 +72,10 @@ RenderedFigure render_snapshot(const validation::SnapshotData& data, const Rende
 RenderedFigure render_work_precision(const validation::WorkPrecisionData& data,
                                      const RenderOptions& options, const std::string& basename);
 
+/// The file name, without extension, of render_simulation_cost's figure.
+inline constexpr const char* k_simulation_cost_figure = "work_precision_simulation";
 /// Relative standard error of A against CPU seconds, one line per N, targets dashed.
-/// Writes work_precision_simulation.{png,pdf,gp}.
+/// Writes k_simulation_cost_figure.{png,pdf,gp}.
 RenderedFigure render_simulation_cost(const validation::SimulationWorkPrecisionData& data,
                                       const RenderOptions& options);
 
