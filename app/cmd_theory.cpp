@@ -165,6 +165,7 @@ struct TheoryResults {
   /// A with each level's a2, a3 and the given b; none where that μ2 is not positive beyond its
   /// error (the b range makes sure of it for the first level only): the gas would not cool.
   std::array<std::optional<theory::Estimate>, 4> A_by_level;
+  std::array<theory::Estimate, 4> mu2_ratio_at_b;  ///< μ2/μ2(0,0) behind each A, at the given b
   theory::ContactResponse contact, contact_traceless;
   double seconds = 0.0;
 };
@@ -218,6 +219,7 @@ TheoryResults compute_theory(const TheoryOptions& o) {
     };
     const double ratio_error =
         ratio.error + slope(h, 0.0) * lv[i]->a2.error + slope(0.0, h) * lv[i]->a3.error;
+    r.mu2_ratio_at_b[i] = {ratio.value, ratio_error};
     if (ratio.value > ratio_error)
       r.A_by_level[i] =
           theory::cooling_prefactor_A(o.dimension, o.density, 1.0, {ratio.value, ratio_error});
@@ -226,7 +228,10 @@ TheoryResults compute_theory(const TheoryOptions& o) {
   // quantity, so one value and one error, the prediction's (which carries the quadrature's
   // uncertainty of that a2 too). Not under --quadrature adaptive, whose prediction is by another
   // rule than this table.
-  if (quad.method == theory::QuadratureMethod::gauss) r.A_by_level[0] = r.prediction.A;
+  if (quad.method == theory::QuadratureMethod::gauss) {
+    r.A_by_level[0] = r.prediction.A;
+    r.mu2_ratio_at_b[0] = r.prediction.mu2_ratio;
+  }
   r.contact = theory::contact_response(o.dimension, theory::k_paper_dyad_factor, gauss);
   r.contact_traceless = theory::contact_response(o.dimension, o.dimension, gauss);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -310,6 +315,7 @@ void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
                            {"a2", to_json(lv[i]->a2)},
                            {"a3", to_json(lv[i]->a3)},
                            {"mu2_ratio", to_json(lv[i]->mu2_ratio)},
+                           {"mu2_ratio_at_b", to_json(r.mu2_ratio_at_b[i])},
                            {"A", r.A_by_level[i] ? to_json(*r.A_by_level[i]) : nullptr}});
   j["contact_response"] = {{"printed_dyad", to_json(r.contact)},
                            {"traceless_dyad", to_json(r.contact_traceless)}};
