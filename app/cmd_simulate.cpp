@@ -165,6 +165,23 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
 
 void run_simulate(const SimulateOptions& options) {
   const sim::Parameters& p = options.parameters;
+  // First, before the outputs' folders and names are looked at: DSMC keeps velocities only, so
+  // it has no configurations to write, and its runs take seconds.
+  if (p.method == sim::Method::dsmc) {
+    for (const auto& [flag, path] :
+         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz},
+          std::pair{"--pair-correlations", &options.pair_correlations}})
+      if (!path->empty())
+        throw UsageError(flag,
+                         "not allowed with --method dsmc (it has no positions); allowed "
+                         "with --method edmd");
+    for (const auto& [flag, path] : {std::pair{"--checkpoint", &options.checkpoints.path},
+                                     std::pair{"--restart", &options.checkpoints.restart}})
+      if (!path->empty())
+        throw UsageError(flag,
+                         "not allowed with --method dsmc (its runs take seconds); allowed "
+                         "with --method edmd");
+  }
   require_writable_file("--out", options.out, /*create_parent=*/false);
   for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
     require_writable_file("--out", snapshot_path(options.out, k), /*create_parent=*/false);
@@ -216,15 +233,6 @@ void run_simulate(const SimulateOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw_as_usage_error("simulate", e.what());  // validate() names fields; the user typed flags
   }
-  // DSMC keeps velocities only: there are no configurations to write.
-  if (p.method == sim::Method::dsmc)
-    for (const auto& [flag, path] :
-         {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz},
-          std::pair{"--pair-correlations", &options.pair_correlations}})
-      if (!path->empty())
-        throw UsageError(flag,
-                         "not allowed with --method dsmc (it has no positions); allowed "
-                         "with --method edmd");
   // Configurations are written at --snapshot-times only: without them there is nothing to write
   // (and HDF5 refuses the empty list), found only after the whole run.
   for (const auto& [flag, path] :
@@ -233,13 +241,6 @@ void run_simulate(const SimulateOptions& options) {
       throw UsageError(flag, "needs --snapshot-times (the times of the configurations to write)");
   if (!options.pair_correlations.empty() && p.snapshot_times.empty())
     throw UsageError("--pair-correlations", "needs --snapshot-times (the times to measure at)");
-  if (p.method == sim::Method::dsmc)
-    for (const auto& [flag, path] : {std::pair{"--checkpoint", &checkpoints.path},
-                                     std::pair{"--restart", &checkpoints.restart}})
-      if (!path->empty())
-        throw UsageError(flag,
-                         "not allowed with --method dsmc (its runs take seconds); allowed "
-                         "with --method edmd");
 
   if (!options.write_config.empty())
     require_writable_file("--write-config", options.write_config, false);
