@@ -8,11 +8,11 @@ set -u
 set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
+. "$(dirname "$0")/figure_interrupts.sh"
 enter_scratch_folder
 command -v gnuplot >/dev/null || fail "no gnuplot on PATH"
 
 args=(bench --simulation --particles 100 --work 1000 --threads 1)
-temporaries() { ls -A "$1" 2>/dev/null | grep 'molchaos-tmp'; }
 for signal in TERM INT; do
   out=$PWD/stopped_$signal
   # An earlier run of other measurements in the folder: its figures must not stay beside the new
@@ -22,26 +22,11 @@ for signal in TERM INT; do
   earlier=$(cd "$out" && md5sum work_precision_simulation.png work_precision_simulation.pdf \
     work_precision_simulation.gp | cut -d' ' -f1)
   "$bin" "${args[@]}" --out "$out" >/dev/null 2>"$signal.err" &
-  pid=$!
-  for _ in $(seq 3000); do  # up to 30 s for the first figure's temporaries
-    [ -n "$(temporaries "$out")" ] && break
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.01
-  done
-  kill -"$signal" "$pid" || fail "SIG$signal: bench ended before its figures"
-  wait "$pid"
-  status=$?
-  expected=$((128 + $(kill -l "$signal")))
-  [ "$status" -eq "$expected" ] || fail "SIG$signal: exit status $status, expected $expected"
+  signal_at_first_temporary $! "$out" "$signal"
   grep -Eq "^molchaos: bench stopped by SIG$signal (while rendering|after writing) .*work_precision_simulation\.csv" \
     "$signal.err" || fail "SIG$signal: stderr says $(cat "$signal.err")"
   echo "SIG$signal: status $status; $(tail -n 1 "$signal.err")"
-  sleep 1  # an orphaned gnuplot would go on writing its temporaries
-  [ -z "$(temporaries "$out")" ] || fail "SIG$signal: temporaries left: $(temporaries "$out" | tr '\n' ' ')"
-  if pgrep -f -- "$out/" >/dev/null; then
-    pgrep -a -f -- "$out/"
-    fail "SIG$signal: gnuplot still runs after bench ended"
-  fi
+  no_leftovers "$out" "$signal"
   [ -s "$out/work_precision_simulation.csv" ] || fail "SIG$signal: the table is not in place"
   for f in png pdf gp; do
     [ -e "$out/work_precision_simulation.$f" ] || continue
