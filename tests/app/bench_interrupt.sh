@@ -5,12 +5,10 @@
 # and the exit status is 128 + signal with one line on stderr naming what stopped. The next run
 # into the same folder writes every file.
 set -u
-set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
 . "$(dirname "$0")/figure_interrupts.sh"
 enter_scratch_folder
-command -v gnuplot >/dev/null || fail "no gnuplot on PATH"
 
 args=(bench --simulation --particles 100 --work 1000 --threads 1)
 for signal in TERM INT; do

@@ -1,5 +1,7 @@
 # Sourced by the tests that interrupt a command while it draws figures (reproduce_interrupt.sh,
 # bench_interrupt.sh); needs fail() of scratch.sh.
+set -m  # job control: a background job must not start with SIGINT ignored
+command -v gnuplot >/dev/null || fail "no gnuplot on PATH"
 
 # This suite's temporaries in folder $1, one name per line.
 temporaries() { ls -A "$1" 2>/dev/null | grep 'molchaos-tmp'; }

@@ -5,12 +5,10 @@
 # stderr naming what stopped, and the same command then writes every figure and the report from
 # the cache, byte for byte those of an uninterrupted run into another folder.
 set -u
-set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
 . "$(dirname "$0")/figure_interrupts.sh"
 enter_scratch_folder
-command -v gnuplot >/dev/null || fail "no gnuplot on PATH"
 
 args=(reproduce --quick --threads 1 --quiet --cache "$PWD/cache")
 "$bin" "${args[@]}" --out "$PWD/whole" >/dev/null 2>whole.err || { cat whole.err; fail "reference run"; }
