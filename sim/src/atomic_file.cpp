@@ -53,10 +53,9 @@ std::string temporary_name(const std::string& path) {
   suffix += hex;
   const fs::path p(path);
   std::string stem = p.filename().string();
-  // A name the file system takes must leave room for the suffix: the stem is cut, at the start
-  // of a UTF-8 character, so that the temporary's name fits too.
-  // Within the longest path too (PATH_MAX bytes with its terminating zero), which the final
-  // name's path may come close to.
+  // Any name the file system takes must leave room for the suffix: the stem is cut, at the start
+  // of a UTF-8 character, so that the temporary's name fits the longest name and its path the
+  // longest path (PATH_MAX bytes with the terminating zero), as the final name does.
   const std::size_t directory = p.parent_path().empty() ? 0 : p.parent_path().string().size() + 1;
   const std::size_t path_room = PATH_MAX - 1 > directory ? PATH_MAX - 1 - directory : 0;
   const std::size_t max = std::min(name_max(p), path_room);
