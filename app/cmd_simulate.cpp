@@ -156,11 +156,27 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
                 [&](std::ostream& out) { validation::write_run_pair_correlations(result, out); });
 #ifdef MOLCHAOS_HAVE_IO
   if (!options.trajectory.empty()) io::write_h5md_file(result, options.trajectory, files);
-  if (!options.xyz.empty()) io::write_xyz_file(result, options.xyz, files);
+  // An XYZ file is its frames, and the run's parameters ride on their comment lines: a run that
+  // stopped before its first snapshot time has none, and an empty file could not be re-run.
+  const bool xyz_frames = !options.xyz.empty() && !result.snapshots.empty();
+  if (xyz_frames) io::write_xyz_file(result, options.xyz, files);
 #endif
   const std::vector<std::string> replaced = parameter_lines(options.out);  // before the commit
   files.commit();
   remove_earlier_snapshots(options, result.snapshots.size(), replaced);
+#ifdef MOLCHAOS_HAVE_IO
+  if (!options.xyz.empty() && !xyz_frames) {
+    // The file of that name is an earlier run's (its frames are not this run's): removed, as a
+    // rename of this run's file would have replaced it.
+    std::error_code ignored;
+    const bool removed = std::filesystem::remove(options.xyz, ignored);
+    std::fprintf(stderr,
+                 "note: no snapshot time reached before the run stopped: no --xyz file written "
+                 "(an XYZ file holds frames only)%s; %s repeats the run\n",
+                 removed ? (", the earlier " + options.xyz + " removed").c_str() : "",
+                 options.out.c_str());
+  }
+#endif
 }
 
 void run_simulate(const SimulateOptions& options) {
@@ -280,8 +296,8 @@ void run_simulate(const SimulateOptions& options) {
     interrupt_signals::end_by_signal();
   }
   // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
-  // for: the files say so in their rows (none in an empty --xyz file, a --pair-correlations
-  // table without rows), and this line at once.
+  // for: the files say so in their rows (no frame in the H5MD file and no --xyz file, a
+  // --pair-correlations table without rows), and this line at once.
   if (result.snapshots.size() < p.snapshot_times.size())
     std::fprintf(stderr, "note: %zu of the %zu snapshot times reached before the run stopped\n",
                  result.snapshots.size(), p.snapshot_times.size());

@@ -154,11 +154,17 @@ grep -q -- "--out: ext.snapshot0.csv holds a snapshot of another run" ext.err ||
   fail "no refusal naming the other run's snapshot: $(cat ext.err)"
 grep -qx '# seed = 1' ext.snapshot0.csv || fail "ext.csv's snapshot was changed"
 # A run stopped before its first snapshot time keeps its outputs; the table has no rows, and says so.
+# An XYZ file is frames only: none is written (an empty one could not be re-run), and an earlier
+# run's file of that name is removed, not left beside this run's outputs.
+echo "an earlier run's frames" >early.xyz
 "$bin" simulate --particles 200 --t-end 50 --restitution 0.7 --relax 1 --max-collisions 10 --snapshot-times 40 \
   --pair-correlations early_g.csv --xyz early.xyz --quiet --out early.csv 2>early.err || fail "a run stopped early failed: $(cat early.err)"
 [ -s early.csv ] && grep -q '^# no rows: the run stopped before its first snapshot time' early_g.csv ||
   fail "a run stopped before its snapshots lost its outputs: $(ls early*)"
 grep -q '0 of the 1 snapshot times reached' early.err || fail "no note of the snapshots not reached: $(cat early.err)"
+[ ! -e early.xyz ] || fail "an XYZ file without frames was left: $(wc -c <early.xyz) bytes"
+grep -q 'no --xyz file written (an XYZ file holds frames only), the earlier early.xyz removed' early.err ||
+  fail "no note of the XYZ file not written: $(cat early.err)"
 echo "ok: snapshot paths"
 
 # 9. A signal while the outputs are written: it waits until they are all in place, no temporary
