@@ -297,20 +297,36 @@ void reject_repeated_values(const std::string& flag, std::vector<T> values,
 }
 
 /// Throws UsageError(flag, ...) if two of the (flag, path) outputs name one file (empty paths are
-/// skipped): the output written last would replace the other without a word.
-inline void require_distinct_files(const std::vector<std::pair<std::string, std::string>>& files) {
+/// skipped): the output written last would replace the other without a word. Likewise if an
+/// input the command reads (--config, --restart) is also one of its outputs, which would replace
+/// the file it was read from.
+inline void require_distinct_files(
+    const std::vector<std::pair<std::string, std::string>>& outputs,
+    const std::vector<std::pair<std::string, std::string>>& inputs = {}) {
   namespace fs = std::filesystem;
-  std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
-  for (const auto& [flag, path] : files) {
-    if (path.empty()) continue;
+  const auto resolved = [](const std::string& path) {
     std::error_code ec;
     fs::path file = fs::weakly_canonical(fs::absolute(path), ec);  // through "..", "." and links
-    if (ec) file = fs::absolute(path).lexically_normal();
+    return ec ? fs::absolute(path).lexically_normal() : file;
+  };
+  std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
+  for (const auto& [flag, path] : outputs) {
+    if (path.empty()) continue;
+    const fs::path file = resolved(path);
     for (const auto& [other, owner] : seen)
       if (other == file)
         throw UsageError(flag, "'" + path + "' is also the file of " + owner +
                                    "; give each output its own file");
     seen.emplace_back(file, flag);
+  }
+  for (const auto& [flag, path] : inputs) {
+    if (path.empty()) continue;
+    const fs::path file = resolved(path);
+    for (const auto& [other, owner] : seen)
+      if (other == file)
+        throw UsageError(flag, "'" + path + "' is also the file of " + owner +
+                                   ", which would replace what this command reads; give " + owner +
+                                   " another file");
   }
 }
 

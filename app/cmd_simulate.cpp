@@ -44,6 +44,7 @@ struct SimulateOptions {
   bool quiet = false;
   std::string write_config;  // TOML file of the parameters (empty: none)
   sim::CheckpointOptions checkpoints;
+  std::string config;  // the --config file read (empty: none), which no output may replace
 
   /// Every file the run writes (empty names: not asked for): its outputs and its checkpoint.
   std::vector<std::string> written_files() const {
@@ -208,8 +209,9 @@ void run_simulate(const SimulateOptions& options) {
   const sim::CheckpointOptions& checkpoints = options.checkpoints;
   if (!checkpoints.path.empty()) require_writable_file("--checkpoint", checkpoints.path, false);
   {
-    // Every file the run writes, and the checkpoint it continues (which only --checkpoint may
-    // replace: the usual way to go on from where a run stopped).
+    // Every file the run writes, the file its options came from, and the checkpoint it
+    // continues (which only --checkpoint may replace: the usual way to go on from where a run
+    // stopped).
     std::vector<std::pair<std::string, std::string>> files{{"--out", options.out}};
     for (std::size_t k = 0; k < p.snapshot_times.size(); ++k)
       files.emplace_back("--out (its snapshot " + std::to_string(k) + ")",
@@ -219,10 +221,9 @@ void run_simulate(const SimulateOptions& options) {
                                {"--pair-correlations", options.pair_correlations},
                                {"--write-config", options.write_config},
                                {"--checkpoint", checkpoints.path}});
-    require_distinct_files(files);
+    require_distinct_files(files, {{"--config", options.config}});
     files.pop_back();
-    files.emplace_back("--restart", checkpoints.restart);
-    require_distinct_files(files);
+    require_distinct_files(files, {{"--restart", checkpoints.restart}});
   }
   {
     // A snapshot file this run would write that another run wrote (its parameter lines are not
@@ -356,7 +357,8 @@ void add_simulate_command(CLI::App& app) {
       ->check(path_name());
   const CLI::Option* relax =
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
-  set_callback_with_config(cmd, [options, relax] {
+  set_callback_with_config(cmd, [options, relax](const std::string& config) {
+    options->config = config;
     if (relax->count() == 0) sim::default_relaxation_for_method(options->parameters);
     run_simulate(*options);
   });

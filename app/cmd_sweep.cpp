@@ -35,6 +35,7 @@ struct SweepCliOptions {
   bool max_seeds_given = false;
   bool t_end_tau0_given = false, t_end_elastic_given = false, target_error_given = false;
   bool threads_given = false;
+  std::string config;  // the --config file read (empty: none), which --out may not replace
 };
 
 // Options that apply only to cooling (restitution < 1) or only to elastic (restitution 1) points
@@ -103,7 +104,19 @@ void run_sweep_command(SweepCliOptions& o) {
                        "value 1 with --target-error: the first stage needs 2 runs or "
                        "more per point to measure their scatter");
   }
-  require_distinct_files({{"--cache", o.cache}, {"--out", o.out}});
+  require_distinct_files({{"--cache", o.cache}, {"--out", o.out}}, {{"--config", o.config}});
+  if (!o.out.empty() && !o.cache.empty()) {
+    // A summary written among the cached runs would replace an entry of that name, or be taken
+    // for a corrupt one by the next sweep.
+    std::error_code ec;
+    const auto folder = std::filesystem::weakly_canonical(
+        std::filesystem::absolute(o.out).parent_path(), ec);
+    if (!ec && folder == std::filesystem::weakly_canonical(std::filesystem::absolute(o.cache), ec) &&
+        !ec)
+      throw UsageError("--out", "'" + o.out + "' lies in the --cache folder '" + o.cache +
+                                    "', whose files are the cached runs; write the summary "
+                                    "outside it");
+  }
   try {
     validation::validate(o.spec);
   } catch (const std::invalid_argument& e) {
@@ -240,8 +253,9 @@ void add_sweep_command(CLI::App& app) {
                              ->capture_default_str();
   cmd->add_option("--out", o->out, "summary CSV")->check(path_name());
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
-  set_callback_with_config(cmd,
-                           [o, relax, max_seeds, target_error, t_end_tau0, t_end_elastic, threads] {
+  set_callback_with_config(cmd, [o, relax, max_seeds, target_error, t_end_tau0, t_end_elastic,
+                                 threads](const std::string& config) {
+                             o->config = config;
                              o->relax_given = relax->count() > 0;
                              o->max_seeds_given = max_seeds->count() > 0;
                              o->target_error_given = target_error->count() > 0;

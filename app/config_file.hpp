@@ -13,6 +13,7 @@
 #include <iosfwd>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -54,14 +55,18 @@ void apply_config_file(CLI::App* cmd, const std::string& path);
 std::string config_file_that_set(const std::string& flag);
 
 /// cmd's callback: reads --config FILE (added here) into the options not given as flags, then
-/// runs `action`.
+/// runs `action`, given the file's path (empty: none) where it takes one, so that a command
+/// can keep its outputs off the file it read.
 template <class Action>
 void set_callback_with_config(CLI::App* cmd, Action action) {
   auto path = std::make_shared<std::string>();
   add_config_option(cmd, *path);
   cmd->callback([cmd, path, action] {
     apply_config_file(cmd, *path);
-    action();
+    if constexpr (std::is_invocable_v<Action, const std::string&>)
+      action(*path);
+    else
+      action();
   });
 }
 

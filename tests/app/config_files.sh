@@ -216,5 +216,20 @@ if [ -f traj.xyz ]; then
   refused "--config: cut.xyz: ends in the middle of its first comment line \(a file cut short\?\)" \
     simulate --config cut.xyz
 fi
+# No output may replace the file the options came from (a hand-written TOML replaced by a CSV):
+# refused before any work, the file unchanged; nor may a sweep's summary land among its cached runs.
+cp run.toml own.toml
+refused "--config: 'own.toml' is also the file of --out, which would replace what this command reads" \
+  simulate --config own.toml --out own.toml
+refused "--config: './own.toml' is also the file of --write-config" \
+  simulate --config ./own.toml --write-config own.toml --out other.csv
+printf 'particles = 100\nseeds = 2\n' >sweep.toml
+cp sweep.toml own_sweep.toml
+refused "--config: 'own_sweep.toml' is also the file of --out" \
+  sweep --config own_sweep.toml --out own_sweep.toml --cache ''
+cmp sweep.toml own_sweep.toml || fail "the sweep's --config file was changed by a refused command"
+cmp run.toml own.toml || fail "the --config file was changed by a refused command"
+refused "--out: 'cache/../cache/s.csv' lies in the --cache folder 'cache', whose files are the cached runs" \
+  sweep --seeds 1 --cache cache --out cache/../cache/s.csv
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"
