@@ -296,6 +296,14 @@ void reject_repeated_values(const std::string& flag, std::vector<T> values,
     throw UsageError(flag, fmt::format("value {} is listed twice; {}", *repeated, remedy));
 }
 
+/// The file a path names, resolved through "..", "." and symbolic links (as far as they exist).
+inline std::filesystem::path resolved_path(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path file = fs::weakly_canonical(fs::absolute(path), ec);
+  return ec ? fs::absolute(path).lexically_normal() : file;
+}
+
 /// Throws UsageError(flag, ...) if two of the (flag, path) outputs name one file (empty paths are
 /// skipped): the output written last would replace the other without a word. Likewise if an
 /// input the command reads (--config, --restart) is also one of its outputs, which would replace
@@ -304,15 +312,10 @@ inline void require_distinct_files(
     const std::vector<std::pair<std::string, std::string>>& outputs,
     const std::vector<std::pair<std::string, std::string>>& inputs = {}) {
   namespace fs = std::filesystem;
-  const auto resolved = [](const std::string& path) {
-    std::error_code ec;
-    fs::path file = fs::weakly_canonical(fs::absolute(path), ec);  // through "..", "." and links
-    return ec ? fs::absolute(path).lexically_normal() : file;
-  };
   std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
   for (const auto& [flag, path] : outputs) {
     if (path.empty()) continue;
-    const fs::path file = resolved(path);
+    const fs::path file = resolved_path(path);
     for (const auto& [other, owner] : seen)
       if (other == file)
         throw UsageError(flag, "'" + path + "' is also the file of " + owner +
@@ -321,7 +324,7 @@ inline void require_distinct_files(
   }
   for (const auto& [flag, path] : inputs) {
     if (path.empty()) continue;
-    const fs::path file = resolved(path);
+    const fs::path file = resolved_path(path);
     for (const auto& [other, owner] : seen)
       if (other == file)
         throw UsageError(flag, "'" + path + "' is also the file of " + owner +

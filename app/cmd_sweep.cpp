@@ -108,11 +108,7 @@ void run_sweep_command(SweepCliOptions& o) {
   if (!o.out.empty() && !o.cache.empty()) {
     // A summary written among the cached runs would replace an entry of that name, or be taken
     // for a corrupt one by the next sweep.
-    std::error_code ec;
-    const auto folder = std::filesystem::weakly_canonical(
-        std::filesystem::absolute(o.out).parent_path(), ec);
-    if (!ec && folder == std::filesystem::weakly_canonical(std::filesystem::absolute(o.cache), ec) &&
-        !ec)
+    if (resolved_path(o.out).parent_path() == resolved_path(o.cache))
       throw UsageError("--out", "'" + o.out + "' lies in the --cache folder '" + o.cache +
                                     "', whose files are the cached runs; write the summary "
                                     "outside it");
@@ -255,15 +251,15 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_flag("--quiet", o->quiet, "no progress on stderr");
   set_callback_with_config(cmd, [o, relax, max_seeds, target_error, t_end_tau0, t_end_elastic,
                                  threads](const std::string& config) {
-                             o->config = config;
-                             o->relax_given = relax->count() > 0;
-                             o->max_seeds_given = max_seeds->count() > 0;
-                             o->target_error_given = target_error->count() > 0;
-                             o->t_end_tau0_given = t_end_tau0->count() > 0;
-                             o->t_end_elastic_given = t_end_elastic->count() > 0;
-                             o->threads_given = threads->count() > 0;
-                             run_sweep_command(*o);
-                           });
+    o->config = config;
+    o->relax_given = relax->count() > 0;
+    o->max_seeds_given = max_seeds->count() > 0;
+    o->target_error_given = target_error->count() > 0;
+    o->t_end_tau0_given = t_end_tau0->count() > 0;
+    o->t_end_elastic_given = t_end_elastic->count() > 0;
+    o->threads_given = threads->count() > 0;
+    run_sweep_command(*o);
+  });
 }
 
 }  // namespace molchaos::app
