@@ -15,6 +15,7 @@
 #include "config_file.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
+#include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/staged_ensemble.hpp"
 #include "molchaos/version.hpp"
 #include "parameter_options.hpp"
@@ -133,8 +134,11 @@ void run_sweep_command(SweepCliOptions& o) {
   // --target-error: further seeds in stages (each reads the seeds before it back from the cache);
   // failed runs are counted per point by the summaries below.
   validation::grow_to_target({{&points, &o.spec}}, so, validation::WindowRule{});
-  std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>5}\n", "density",
-                           "eps", "method", "mode", "A", "A_err", "A_theory", "diff/SE", "runs");
+  // p: how often runs of an A that theory got right would differ by this many standard errors
+  // or more (Student's t: from a handful of runs the standard error is itself uncertain).
+  std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>7} {:>5}\n",
+                           "density", "eps", "method", "mode", "A", "A_err", "A_theory", "diff/SE",
+                           "p", "runs");
   int failed = 0;
   for (const auto& p : points) {
     const auto& s = p.summary;
@@ -154,11 +158,14 @@ void run_sweep_command(SweepCliOptions& o) {
     // One run has no standard error: say so instead of printing 0 and an absurd diff/SE.
     const double se = std::hypot(s.A.error, p.A_theory.error);
     const bool error_bar = s.runs >= 2 && se > 0;
+    const double t = (s.A.value - p.A_theory.value) / se;
     std::cout << fmt::format(
-        "{:>8} {:>6} {:>6} {:>6} {:>12.7g} {:>10} {:>12.7g} {:>9} {:>5}{}\n", s.density,
+        "{:>8} {:>6} {:>6} {:>6} {:>12.7g} {:>10} {:>12.7g} {:>9} {:>7} {:>5}{}\n", s.density,
         s.restitution, validation::method_name(p.method), s.mode, s.A.value,
         error_bar ? fmt::format("{:.4g}", s.A.error) : "-", p.A_theory.value,
-        error_bar ? fmt::format("{:.2f}", (s.A.value - p.A_theory.value) / se) : "-", s.runs,
+        error_bar ? fmt::format("{:.2f}", t) : "-",
+        error_bar ? fmt::format("{:.2g}", validation::student_p_two_sided(t, s.runs - 1)) : "-",
+        s.runs,
         error_bar     ? ""
         : s.runs == 0 ? "  (not measured: no run succeeded)"
                       : "  (no error bar: fewer than 2 runs)");

@@ -18,6 +18,7 @@
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/estimator_study.hpp"
 #include "molchaos/validation/haff_fit.hpp"
+#include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/report_html.hpp"
 #include "molchaos/validation/sweep.hpp"
 
@@ -186,6 +187,17 @@ BOOST_AUTO_TEST_CASE(mean_and_standard_error_values) {
   BOOST_TEST(m.value == 2.5);
   BOOST_TEST(std::abs(m.error - std::sqrt(5.0 / 3.0 / 4.0)) <= 1e-15);
   BOOST_TEST(mean_and_standard_error({7.0}).error == 0.0);
+}
+
+// Student's t in closed form: one degree of freedom is Cauchy's, P(|t| > x) = 1 − (2/π) atan x;
+// two give P(|t| > x) = 1 − x/√(x² + 2).
+BOOST_AUTO_TEST_CASE(student_two_sided_tail_in_closed_form) {
+  namespace tt = boost::test_tools;
+  for (const double x : {0.0, 0.5, 1.0, 3.0, 20.0}) {
+    BOOST_TEST(student_p_two_sided(x, 1) == 1.0 - 2.0 / M_PI * std::atan(x), tt::tolerance(1e-12));
+    BOOST_TEST(student_p_two_sided(-x, 2) == 1.0 - x / std::sqrt(x * x + 2.0), tt::tolerance(1e-12));
+  }
+  BOOST_TEST(student_p_two_sided(4.0, 0) == 1.0);  // one run: no scatter, no test
 }
 
 BOOST_AUTO_TEST_CASE(seeds_depend_on_base_and_index_only) {

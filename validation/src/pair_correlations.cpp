@@ -228,6 +228,10 @@ double normal_score(double t, int dof) {
   return t < 0 ? -z : z;
 }
 
+double student_p_two_sided(double t, int dof) {
+  return dof > 0 ? 2.0 * gsl_cdf_tdist_Q(std::abs(t), static_cast<double>(dof)) : 1.0;
+}
+
 ChiSquare chi_square_zero_velocity_correlations(const std::vector<PairCorrelationBin>& bins) {
   ChiSquare c;
   for (const auto& b : bins) {

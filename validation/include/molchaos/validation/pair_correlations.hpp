@@ -78,4 +78,8 @@ double chi_square_p_value(double chi2, int dof);
 /// k − 1 dof (heavy-tailed for k ≈ 8), so its square may enter a χ² only after this mapping.
 double normal_score(double t, int dof);
 
+/// Two-sided tail probability of Student's t with dof degrees of freedom: how often a mean over
+/// dof + 1 runs lies |t| estimated standard errors or more from the true value (1 for dof = 0).
+double student_p_two_sided(double t, int dof);
+
 }  // namespace molchaos::validation
