@@ -99,8 +99,11 @@ std::string hydrodynamics_text(int dimension, double restitution, double density
   std::string s =
       "\nlinear hydrodynamics of the HCS (Enskog, first Sonine; rates per collision "
       "per particle)\n";
-  s += fmt::format("  η*, κ*, μ*, ζ*         {:.6g}, {:.6g}, {:.6g}, {:.6g}\n", c.shear_viscosity,
-                   c.thermal_conductivity, c.heat_flux_density, c.cooling_rate);
+  s += fmt::format(
+      "  η*, κ*, μ*, ζ*         {:.6g}, {:.6g}, {:.6g}, {:.6g}   (Garzó–Dufty's reduced units: "
+      "η/η0, κ/κ0, nμ/(Tκ0), ζ/ν0; ν0/ω_E = {:.6g})\n",
+      c.shear_viscosity, c.thermal_conductivity, c.heat_flux_density, c.cooling_rate,
+      c.collision_ratio);
   if (theory::heat_mode_unstable_at_every_wavelength(c))
     s += fmt::format(
         "  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode: no k∥, the longitudinal modes grow at "

@@ -66,7 +66,7 @@ double critical_heat_wavenumber(const TransportCoefficients& c);
 
 /// True where the longitudinal modes grow at every wavelength (longitudinal_mode_rate > 0 for
 /// all k), so no k∥ exists: the determinant of the longitudinal matrix never vanishes (the heat
-/// flux coefficient μ* outweighs κ*, at strong dissipation: ε ≲ 0.32 for disks and ε ≲ 0.16 for
+/// flux coefficient μ* outweighs κ*, at strong dissipation: ε ≲ 0.35 for disks and ε ≲ 0.19 for
 /// spheres at n = 0.05). There
 /// the first-Sonine Navier–Stokes description itself breaks down.
 bool heat_mode_unstable_at_every_wavelength(const TransportCoefficients& c);
