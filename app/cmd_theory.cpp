@@ -228,9 +228,12 @@ TheoryResults compute_theory(const TheoryOptions& o) {
   // quantity, so one value and one error, the prediction's (which carries the quadrature's
   // uncertainty of that a2 too). Not under --quadrature adaptive, whose prediction is by another
   // rule than this table.
+  // The same rule as the other levels: no A where μ2 is not positive beyond its error.
   if (quad.method == theory::QuadratureMethod::gauss) {
-    r.A_by_level[0] = r.prediction.A;
     r.mu2_ratio_at_b[0] = r.prediction.mu2_ratio;
+    r.A_by_level[0] = std::nullopt;
+    if (r.prediction.mu2_ratio.value > r.prediction.mu2_ratio.error)
+      r.A_by_level[0] = r.prediction.A;
   }
   r.contact = theory::contact_response(o.dimension, theory::k_paper_dyad_factor, gauss);
   r.contact_traceless = theory::contact_response(o.dimension, o.dimension, gauss);
