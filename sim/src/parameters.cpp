@@ -3,6 +3,7 @@
 #include "molchaos/sim/parameters.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -78,9 +79,15 @@ void validate(const Parameters& p) {
                                   " follows " + number(p.snapshot_times[k - 1]) +
                                   "; the times must increase (each snapshot once)");
   const double side = box_side(p);
-  if (!std::isfinite(side))
+  if (!std::isfinite(side)) {
+    // N / n overflows: the smallest density with a finite box for this N, rounded up.
+    const double n_min =
+        std::nextafter(static_cast<double>(p.particles) / std::numeric_limits<double>::max(),
+                       std::numeric_limits<double>::infinity());
     out_of_range("density", number(p.density),
-                 "(0, " + number(n_max) + ") with a finite box side (N / n)^(1/d)");
+                 "[" + number(n_min) + ", " + number(n_max) + ") for N = " +
+                     std::to_string(p.particles) + " (a finite box side (N / n)^(1/d))");
+  }
   // The limits below are the MD engine's (its cells, its initial configuration); DSMC keeps
   // velocities only, and its density enters through the contact value g2 alone.
   if (p.method == Method::dsmc) return;
