@@ -195,7 +195,8 @@ BOOST_AUTO_TEST_CASE(student_two_sided_tail_in_closed_form) {
   namespace tt = boost::test_tools;
   for (const double x : {0.0, 0.5, 1.0, 3.0, 20.0}) {
     BOOST_TEST(student_p_two_sided(x, 1) == 1.0 - 2.0 / M_PI * std::atan(x), tt::tolerance(1e-12));
-    BOOST_TEST(student_p_two_sided(-x, 2) == 1.0 - x / std::sqrt(x * x + 2.0), tt::tolerance(1e-12));
+    BOOST_TEST(student_p_two_sided(-x, 2) == 1.0 - x / std::sqrt(x * x + 2.0),
+               tt::tolerance(1e-12));
   }
   BOOST_TEST(student_p_two_sided(4.0, 0) == 1.0);  // one run: no scatter, no test
 }
