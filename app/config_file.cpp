@@ -47,6 +47,9 @@ bool ends_with(const std::string& text, const std::string& tail) {
 // TOML otherwise: a TOML file's commented-out keys are no keys.
 enum class Kind { toml, csv, xyz };
 
+// The first line of a TOML file of a run's parameters (write_config_toml), which marks it as one.
+constexpr std::string_view k_parameters_title = "# molchaos simulate parameters";
+
 Kind kind_of(const std::string& text) {
   std::istringstream in(text);
   std::string first, second;
@@ -391,7 +394,10 @@ ConfigFile read_config_file(const std::string& path) {
         ConfigItems items = read_toml(lines, path);
         // Comments alone set nothing either: the defaults would run in place of the meant run.
         if (items.empty()) throw UsageError("--config", path + ": no settings (comments only)");
-        return {std::move(items), false};
+        // A run's parameters as --write-config wrote them are a run's file like its CSV: another
+        // command takes the state point from it and names what it has no option for.
+        const bool run_parameters = text.starts_with(k_parameters_title);
+        return {std::move(items), run_parameters, run_parameters};
       }
   }
   return {};
@@ -549,7 +555,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
 }
 
 void write_config_toml(const sim::Parameters& p, std::ostream& out) {
-  out << "# molchaos simulate parameters (read back with --config)\n";
+  out << k_parameters_title << " (read back with --config)\n";
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     const std::string text = sim::format_value(p, info);
     out << info.name << " = ";

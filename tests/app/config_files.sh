@@ -131,6 +131,14 @@ refused "--relax: value 20 is not allowed with method = dsmc.*\(the value is fro
   fail "theory --config of a run does not name the run's length it leaves out"
 refused "--config: run.csv: the run uses the TC model \(tc = 1e-04\), and sweep has no option for it" \
   sweep --config run.csv
+# The same for the TOML of --write-config, a run's file too (it was refused: "unknown key").
+"$bin" simulate --particles 100 --t-end 1 --out plain2.csv --write-config plain.toml --quiet 2>/dev/null ||
+  fail "plain run with --write-config"
+"$bin" theory --config plain.toml 2>&1 >/dev/null |
+  grep -q '^note: --config plain.toml: theory has no option for the run.s randomize = none, seed = 1, t_end = 1, .*; not used$' ||
+  fail "theory --config of a run's TOML does not take its state point"
+refused "--config: run.toml: the run uses the TC model \(tc = 1e-04\), and sweep has no option for it" \
+  sweep --config run.toml
 # A key spelled as its flag in a result header is a key (it was skipped as a title line).
 sed 's/^# tc = .*/&\n# t-end = 5/' run.csv >hyphen.csv
 refused "--config: hyphen.csv: key 't-end' sets --t-end again \(first as 't_end'\)" \
