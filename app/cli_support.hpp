@@ -311,26 +311,26 @@ inline std::filesystem::path resolved_path(const std::string& path) {
 inline void require_distinct_files(
     const std::vector<std::pair<std::string, std::string>>& outputs,
     const std::vector<std::pair<std::string, std::string>>& inputs = {}) {
-  namespace fs = std::filesystem;
-  std::vector<std::pair<fs::path, std::string>> seen;  // the file (resolved) and whose it is
+  std::vector<std::pair<std::filesystem::path, std::string>> seen;  // a file and whose it is
+  // The output flag that names path's file already, or null.
+  const auto owner_of = [&seen](const std::string& path) -> const std::string* {
+    const std::filesystem::path file = resolved_path(path);
+    for (const auto& [other, owner] : seen)
+      if (other == file) return &owner;
+    return nullptr;
+  };
   for (const auto& [flag, path] : outputs) {
     if (path.empty()) continue;
-    const fs::path file = resolved_path(path);
-    for (const auto& [other, owner] : seen)
-      if (other == file)
-        throw UsageError(flag, "'" + path + "' is also the file of " + owner +
-                                   "; give each output its own file");
-    seen.emplace_back(file, flag);
+    if (const std::string* owner = owner_of(path))
+      throw UsageError(
+          flag, "'" + path + "' is also the file of " + *owner + "; give each output its own file");
+    seen.emplace_back(resolved_path(path), flag);
   }
-  for (const auto& [flag, path] : inputs) {
-    if (path.empty()) continue;
-    const fs::path file = resolved_path(path);
-    for (const auto& [other, owner] : seen)
-      if (other == file)
-        throw UsageError(flag, "'" + path + "' is also the file of " + owner +
-                                   ", which would replace what this command reads; give " + owner +
-                                   " another file");
-  }
+  for (const auto& [flag, path] : inputs)
+    if (const std::string* owner = path.empty() ? nullptr : owner_of(path))
+      throw UsageError(flag, "'" + path + "' is also the file of " + *owner +
+                                 ", which would replace what this command reads; give " + *owner +
+                                 " another file");
 }
 
 }  // namespace molchaos::app
