@@ -227,8 +227,8 @@ TheoryResults compute_theory(const TheoryOptions& o) {
   // The first level is the header's prediction (first-Sonine a2, a3 = 0, the given b): one
   // quantity, so one value and one error, the prediction's (which carries the quadrature's
   // uncertainty of that a2 too). Not under --quadrature adaptive, whose prediction is by another
-  // rule than this table.
-  // The same rule as the other levels: no A where μ2 is not positive beyond its error.
+  // rule than this table. The rule of the other levels holds: no A where μ2 is not positive
+  // beyond its error.
   if (quad.method == theory::QuadratureMethod::gauss) {
     r.mu2_ratio_at_b[0] = r.prediction.mu2_ratio;
     r.A_by_level[0] = std::nullopt;
