@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -79,8 +78,7 @@ void write_table_and_figures(const BenchOptions& o, const std::string& table,
 #endif
   if (interrupt_signals::requested().load()) {
     std::cout.flush();
-    std::cerr << "molchaos: bench stopped by "
-              << (interrupt_signals::signal_number() == SIGINT ? "SIGINT " : "SIGTERM ") << stopped
+    std::cerr << "molchaos: bench stopped by " << interrupt_signals::signal_name() << ' ' << stopped
               << '\n';
     interrupt_signals::end_by_signal();
   }

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -60,8 +59,7 @@ void install_reproduce_signals(const std::string& cache_directory) {
   std::fprintf(stderr,
                "molchaos: reproduce stopped by %s %s; the cache %s keeps every finished run, and "
                "the same command writes the figures and the report from it\n",
-               interrupt_signals::signal_number() == SIGINT ? "SIGINT" : "SIGTERM", stopped.c_str(),
-               cache_directory.c_str());
+               interrupt_signals::signal_name(), stopped.c_str(), cache_directory.c_str());
   interrupt_signals::end_by_signal();
 }
 

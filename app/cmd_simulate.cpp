@@ -293,7 +293,7 @@ void run_simulate(const SimulateOptions& options) {
                sim::stop_message(result).c_str(), options.out.c_str());
   if (interrupt_signals::requested().load()) {  // came while the outputs were written
     std::fprintf(stderr, "simulate: stopped by %s once its outputs were complete\n",
-                 interrupt_signals::signal_number() == SIGINT ? "SIGINT" : "SIGTERM");
+                 interrupt_signals::signal_name());
     interrupt_signals::end_by_signal();
   }
   // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked

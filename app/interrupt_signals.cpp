@@ -50,6 +50,7 @@ void install(std::string message) {
 std::atomic<bool>& under_way() { return g_under_way; }
 const std::atomic<bool>& requested() { return g_requested; }
 int signal_number() { return g_signal; }
+const char* signal_name() { return g_signal == SIGINT ? "SIGINT" : "SIGTERM"; }
 
 void end_by_signal() {
   const int signal = g_signal;

@@ -1,5 +1,6 @@
 // SIGINT and SIGTERM for the commands whose work can be ended in good order: simulate (a
-// checkpoint) and reproduce (figures, tables and report after the cached runs). Two phases.
+// checkpoint, its outputs), reproduce (figures, tables and report after the cached runs) and
+// bench (its table and figures). Two phases.
 // Until the command marks the work as under way (under_way()), a signal ends the process at once
 // by its default action, after the message given to install(): the parent sees the signal (a
 // shell's exit status 128 + signal) as without a handler. From then on the handler only records
@@ -22,6 +23,8 @@ std::atomic<bool>& under_way();
 const std::atomic<bool>& requested();
 /// The recorded signal, 0 before one.
 int signal_number();
+/// "SIGINT" or "SIGTERM": the recorded signal's name, for the command's last line.
+const char* signal_name();
 /// Ends the process by the recorded signal's default action (std::_Exit(128 + signal) should that
 /// return).
 [[noreturn]] void end_by_signal();
