@@ -142,11 +142,11 @@ void probe_writable(const std::string& path) {
                              "' exists and is not a regular file (a device, FIFO, socket or "
                              "symlink); give a new name or a regular file");
   // The temporary's name is cut to fit (temporary_name()), so a name too long is caught here.
-  if (const std::size_t bytes = fs::path(path).filename().string().size(); bytes > name_max(path))
+  const std::size_t bytes = fs::path(path).filename().string().size(), most = name_max(path);
+  if (bytes > most)
     throw std::runtime_error("cannot create " + path + ": its name is " + std::to_string(bytes) +
-                             " bytes, the file system takes at most " +
-                             std::to_string(name_max(path)) + " (" + error_text(ENAMETOOLONG) +
-                             ")");
+                             " bytes, the file system takes at most " + std::to_string(most) +
+                             " (" + error_text(ENAMETOOLONG) + ")");
   const std::string temporary = temporary_name(path);
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
   if (fd < 0)
