@@ -2,6 +2,7 @@
 #include "config_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -143,6 +144,27 @@ std::string toml_string(const std::string& text, const std::string& where) {
   return value;
 }
 
+// A bare number as the options read it: TOML groups digits with underscores (1_000_000), each
+// between two digits; anything else with an underscore is left for the option to refuse.
+std::string number_without_underscores(const std::string& text, const std::string& where) {
+  const auto digit = [&](std::size_t k) {
+    return k < text.size() && std::isdigit(static_cast<unsigned char>(text[k])) != 0;
+  };
+  const bool signed_number = (text[0] == '+' || text[0] == '-') && digit(1);
+  if (text.find('_') == std::string::npos || !(digit(0) || signed_number)) return text;
+  std::string number;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    if (text[k] != '_') {
+      number += text[k];
+    } else if (k == 0 || !digit(k - 1) || !digit(k + 1)) {
+      throw UsageError("--config", where + ": '" + text +
+                                       "': an underscore in a number stands between two digits "
+                                       "(1_000_000)");
+    }
+  }
+  return number;
+}
+
 // One TOML value: a string (toml_string), or a bare number/boolean.
 std::string toml_scalar(const std::string& text, const std::string& where) {
   if (text.empty()) throw UsageError("--config", where + ": missing value");
@@ -151,7 +173,7 @@ std::string toml_scalar(const std::string& text, const std::string& where) {
   if (text.front() == '"' || text.front() == '\'') return toml_string(text, where);
   if (text.front() == '[')
     throw UsageError("--config", where + ": arrays inside arrays are not used; give one list");
-  return text;
+  return number_without_underscores(text, where);
 }
 
 // Where a string of the line opens and closes: quote is the open string's quote (0 outside one);

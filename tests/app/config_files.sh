@@ -52,6 +52,12 @@ grep -qx "# particles = 50" zeros.csv && grep -qx "# seed = 10" zeros.csv &&
   grep -qx "# max_collisions = 100" zeros.csv &&
   grep -qx "# relax_collisions_per_particle = 0" zeros.csv || fail "leading zeros or -0 misread"
 echo "ok: integers with leading zeros read as decimal, -0 as 0"
+# TOML groups digits with underscores: particles = 1_000 is 1000 (it was refused as no integer).
+printf 'particles = 1_00\nt_end = 1_0.5\n' >grouped.toml
+"$bin" simulate --config grouped.toml --out grouped.csv --quiet 2>/dev/null || fail "run with 1_00"
+grep -qx "# particles = 100" grouped.csv && grep -qx "# t_end = 10.5" grouped.csv ||
+  fail "digits grouped with underscores misread"
+echo "ok: digits grouped by underscores, as TOML writes them"
 if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5 writer
   # An H5MD trajectory carries the run's parameters (/parameters): the run repeats from it too.
   "$bin" simulate --config run.csv --out traj.csv --trajectory traj.h5 --xyz traj.xyz --quiet \
@@ -113,6 +119,9 @@ failures=0
 printf 'densty = 0.1\n' >typo.toml
 refused "--config: typo.toml: unknown key 'densty' for simulate; allowed: dim, particles, density" \
   simulate --config typo.toml
+printf 'particles = 1__000\n' >underscores.toml
+refused "--config: underscores.toml line 1: '1__000': an underscore in a number stands between two digits" \
+  simulate --config underscores.toml
 printf 'restitution = 1.5\n' >range.toml
 refused "--config: range.toml: key 'restitution': --restitution: value 1.5 is outside the allowed range \(0, 1\]" \
   simulate --config range.toml
