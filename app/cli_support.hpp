@@ -189,11 +189,17 @@ inline void require_writable_directory(const std::string& flag, const std::strin
 }
 
 /// require_writable_directory, then creates the directory and a real file in it (removed again):
-/// catches what permissions do not show (/proc, /sys, read-only or full file systems).
-inline void require_usable_directory(const std::string& flag, const std::string& directory) {
+/// catches what permissions do not show (/proc, /sys, read-only or full file systems). Returns
+/// the directories it created, the deepest first (for a command that removes them again when it
+/// ends before writing into them).
+inline std::vector<std::string> require_usable_directory(const std::string& flag,
+                                                         const std::string& directory) {
   namespace fs = std::filesystem;
   require_writable_directory(flag, directory);
   std::error_code ec;
+  std::vector<std::string> created;
+  for (fs::path p = directory; !p.empty() && !fs::exists(p, ec); p = p.parent_path())
+    created.push_back(p.string());
   fs::create_directories(directory, ec);
   if (ec) throw UsageError(flag, "cannot create '" + directory + "': " + ec.message());
   try {
@@ -201,6 +207,7 @@ inline void require_usable_directory(const std::string& flag, const std::string&
   } catch (const std::exception& e) {
     throw UsageError(flag, e.what());
   }
+  return created;
 }
 
 /// Throws UsageError(flag, ...) unless a file can be written at `path`: its directory exists (or,

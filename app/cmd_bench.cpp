@@ -325,7 +325,9 @@ void run_bench(const BenchOptions& o) {
     throw UsageError(o.simulation_flag_given, "applies to --simulation only");
   reject_repeated_values("--particles", o.particles,
                          "each N once (the pooled scatter takes every N's runs as independent)");
-  require_usable_directory("--out", o.out);  // created, and a file written in it, before the work
+  // Created, and a file written in it, before the work; removed again by a signal that ends the
+  // measurements, which write nothing until they are done.
+  interrupt_signals::remove_if_empty_when_ended_early(require_usable_directory("--out", o.out));
   interrupt_signals::install();
   if (o.theory) bench_theory(o);
   if (o.simulation) bench_simulation(o);

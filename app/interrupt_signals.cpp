@@ -14,15 +14,17 @@ std::atomic<bool> g_under_way{false};
 std::atomic<bool> g_requested{false};
 volatile std::sig_atomic_t g_signal = 0;
 std::string g_message;  // set before the handler is installed, not changed after
+std::vector<std::string> g_empty_directories;  // the same
 static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
 
 extern "C" void on_signal(int signal) {
   if (!g_under_way.load()) {
-    // write(), signal() and raise() are async-signal-safe.
+    // write(), rmdir(), signal() and raise() are async-signal-safe.
     if (!g_message.empty()) {
       [[maybe_unused]] const ssize_t written =
           ::write(STDERR_FILENO, g_message.data(), g_message.size());
     }
+    for (const std::string& directory : g_empty_directories) ::rmdir(directory.c_str());
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
@@ -32,6 +34,10 @@ extern "C" void on_signal(int signal) {
 }
 
 }  // namespace
+
+void remove_if_empty_when_ended_early(std::vector<std::string> directories) {
+  g_empty_directories = std::move(directories);
+}
 
 void install(std::string message) {
   g_message = std::move(message);

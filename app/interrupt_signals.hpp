@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <string>
+#include <vector>
 
 namespace molchaos::app::interrupt_signals {
 
@@ -17,6 +18,10 @@ namespace molchaos::app::interrupt_signals {
 /// started (nohup, a background job of a shell without job control) stays ignored; SA_RESTART, so
 /// that threads see no EINTR. `message`: printed to stderr when a signal ends the process at once.
 void install(std::string message = {});
+/// Directories a signal that ends the process at once removes when they are empty (rmdir, in the
+/// order given): the output folder a command created for files it had not yet written. Call
+/// before install().
+void remove_if_empty_when_ended_early(std::vector<std::string> directories);
 /// Set (by the command, or the code it hands the flag to) once a signal is to be recorded.
 std::atomic<bool>& under_way();
 /// Set by a recorded signal.

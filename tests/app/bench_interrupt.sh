@@ -40,3 +40,19 @@ for signal in TERM INT; do
   done
 done
 echo "ok: an interrupted bench leaves no temporary and no gnuplot, and its table in place"
+
+# A signal during the measurements (which write nothing until they are done) ends bench at once;
+# the folders it created for the table go with it, a folder that existed before stays.
+mkdir kept
+"$bin" bench --simulation --particles 20000 --work 2000000 --threads 1 --out kept/new/deeper \
+  >/dev/null 2>early.err &
+pid=$!
+for _ in $(seq 100); do [ -d kept/new/deeper ] && break; sleep 0.05; done
+[ -d kept/new/deeper ] || fail "bench did not create its --out folder"
+sleep 0.5
+kill -TERM $pid
+wait $pid
+status=$?
+[ $status -eq 143 ] || fail "a signal during the measurements: status $status, stderr $(cat early.err)"
+[ -d kept ] && [ ! -e kept/new ] || fail "the folders created for the table stayed: $(find kept)"
+echo "ok: a signal during the measurements removes the empty folders bench created"
