@@ -383,7 +383,7 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
 // progress pause (at most 2^20 events, the relaxation's included), writes its checkpoint if it
 // has a path and the relaxation is done (a half-relaxed state has none), and KeyboardInterrupt
 // is raised. Signals with other Python handlers (a SIGINT or SIGTERM handler of the caller's, an
-// alarm) are run in the progress pauses, and stop the run when they raise.
+// alarm) are run at the sample times and progress pauses, and stop the run when they raise.
 std::atomic<bool> g_interrupt_requested{false};
 struct sigaction g_python_sigint {};
 
@@ -459,8 +459,9 @@ py::dict simulate(const py::kwargs& kwargs) {
       result.reset();
     }
   }  // Python's own SIGINT handler is back
+  // A handler's exception goes on, whether the run stopped for it or had just ended when it ran.
+  if (signal_error) throw std::move(*signal_error);
   if (!result) {
-    if (signal_error) throw std::move(*signal_error);
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     PyErr_SetNone(PyExc_KeyboardInterrupt);  // a handler that raised nothing: still no result
     throw py::error_already_set();

@@ -101,8 +101,8 @@ bool relax_or_restore(RunEngine& engine, const Parameters& p, const std::functio
 
 // Observer: ContactStatistics when the run records them, else NoObserver (nothing per collision).
 // Checkpoints are written and interrupts obeyed only between advance_to() calls (at sample
-// times and at the progress pauses), where stopping changes nothing in the engine's state; with
-// none asked for, the run does exactly what it did without them.
+// times and at the progress pauses, each reported to `progress`), where stopping changes nothing in
+// the engine's state; with none asked for, the run does exactly what it did without them.
 template <int D, class Observer>
 std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& progress,
                                const CheckpointOptions& checkpoints) {
@@ -214,6 +214,10 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     }
     done = t;
     if (t == targets.back()) break;  // finished: nothing left to checkpoint
+    // At every sample time too, not only at the pauses: a cooling run's sample intervals can all
+    // fall short of a pause, and a front end that looks for signals here (Python's handlers run
+    // only when it asks) would see none until the end.
+    if (progress) progress({t / p.t_end, engine.collisions(), engine.events(), elapsed()});
     if (interrupted()) {
       save();
       return std::nullopt;

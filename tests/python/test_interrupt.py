@@ -76,6 +76,28 @@ except TimeoutError as e:
     assert said.strip() == "time is up" and float(elapsed) < 30
 
 
+def test_a_sigterm_handler_that_raises_stops_a_cooling_run_with_its_checkpoint(tmp_path):
+    # A cooling run's sample intervals all fall short of a progress pause (2^20 events). Was: the
+    # handler ran only after the whole run, and its KeyboardInterrupt was dropped.
+    ckpt = tmp_path / "run.ckpt"
+    body = f"""
+def on_term(signum, frame):
+    raise KeyboardInterrupt
+signal.signal(signal.SIGTERM, on_term)
+threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGTERM)).start()
+start = time.monotonic()
+try:
+    molchaos.simulate(particles=20000, restitution=0.9, t_end=1e6,
+                      relax_collisions_per_particle=0, checkpoint={str(ckpt)!r})
+    print("finished")
+except KeyboardInterrupt:
+    print("interrupted", time.monotonic() - start)
+"""
+    words = run_script(body).split()
+    assert words[0] == "interrupted" and float(words[1]) < 30
+    assert ckpt.is_file()
+
+
 def test_a_sigint_handler_of_the_callers_is_run_and_left_in_place():
     body = """
 seen = []
