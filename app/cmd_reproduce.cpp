@@ -69,11 +69,12 @@ void stop_if_interrupted(const std::string& stopped, const std::string& cache_di
 
 // The command line as the report names it: the options that change what the report says. --out,
 // --cache, --threads, --quiet and --relax-each-run change where the files go and how fast they
-// come, not their content, so the same options give the same report byte for byte.
-std::string report_command(const ReproduceCliOptions& o) {
+// come, not their content, so the same options give the same report byte for byte; a --seeds
+// equal to the default is left out, as the tables' own re-runs (--config) give it.
+std::string report_command(const ReproduceCliOptions& o, int default_seeds) {
   std::string command = "molchaos reproduce";
   if (o.quick) command += " --quick";
-  if (o.seeds > 0) command += fmt::format(" --seeds {}", o.seeds);
+  if (o.seeds > 0 && o.seeds != default_seeds) command += fmt::format(" --seeds {}", o.seeds);
   if (o.no_figures) command += " --no-figures";
   return command;
 }
@@ -128,6 +129,7 @@ std::vector<std::string> render_figures(const validation::ReproduceResults& resu
 void run_reproduce(const ReproduceCliOptions& o) {
   auto cfg = o.quick ? validation::ReproduceConfig::quick_look()
                      : validation::ReproduceConfig::paper_scale();
+  const int default_seeds = cfg.seeds;
   if (o.seeds > 0) cfg.seeds = o.seeds;
   if (o.relax_each_run) sim::share_relaxed_states(false);
   // Both folders are created, and a file written in each, before any run: permissions alone do
@@ -185,7 +187,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
   validation::write_estimator_table(results, o.out);
   stop_if_interrupted("after the tables (no report)", sweep.cache_directory);
   const std::string markdown =
-      validation::report_markdown(results, figure_files, report_command(o));
+      validation::report_markdown(results, figure_files, report_command(o, default_seeds));
   validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
                                     markdown);
   // The same report as one self-contained page, figures embedded.
