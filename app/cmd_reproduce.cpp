@@ -4,11 +4,14 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli_support.hpp"
@@ -44,7 +47,8 @@ struct ReproduceCliOptions {
 // signal ends the command at once: every finished run is in the cache already, written whole
 // (temporary name, then rename), so the handler only says so. From the figures on, the signal is
 // recorded: the figure being rendered ends its gnuplot and removes its temporaries
-// (figures::RenderOptions::interrupt), and the command then ends by the signal's default action.
+// (figures::RenderOptions::interrupt), the staged outputs are discarded (StagedOutputs), and the
+// command then ends by the signal's default action.
 void install_reproduce_signals(const std::string& cache_directory) {
   interrupt_signals::install(fmt::format(
       "molchaos: reproduce interrupted during the runs and analyses; the cache {} keeps every "
@@ -52,19 +56,86 @@ void install_reproduce_signals(const std::string& cache_directory) {
       cache_directory));
 }
 
+// The outputs of one reproduction (figures, tables, report), written into a staging folder inside
+// --out and moved into place together once all are complete: an interrupted or failed
+// reproduction leaves the folder's earlier outputs as they were, and a report never stands beside
+// figures of another run. The folder has a temporary's name, which remove_stale_temporaries()
+// clears after a killed process.
+class StagedOutputs {
+ public:
+  StagedOutputs(std::string out, std::string cache)
+      : out_(std::move(out)),
+        cache_(std::move(cache)),
+        path_(sim::temporary_name((std::filesystem::path(out_) / "reproduce").string())) {
+    std::error_code ec;
+    std::filesystem::create_directory(path_, ec);
+    if (ec) throw std::runtime_error("cannot create " + path_ + ": " + ec.message());
+  }
+  ~StagedOutputs() { discard(); }
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+
+  const std::string& path() const { return path_; }
+  const std::string& cache() const { return cache_; }
+  void discard() const {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  /// Moves every file into --out, the report last; returns their names.
+  std::vector<std::string> commit() const {
+    namespace fs = std::filesystem;
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(path_))
+      names.push_back(entry.path().filename().string());
+    std::ranges::sort(names, {}, [](const std::string& name) {
+      return std::pair{name.starts_with("REPORT."), name};
+    });
+    for (const std::string& name : names) fs::rename(fs::path(path_) / name, fs::path(out_) / name);
+    return names;
+  }
+
+ private:
+  std::string out_, cache_, path_;
+};
+
 // Ends the command as the recorded signal would have: one line on stderr saying what it stopped,
-// then the signal's default action.
-[[noreturn]] void end_by_signal(const std::string& stopped, const std::string& cache_directory) {
+// then the signal's default action. The staged outputs are discarded: the folder is as before.
+[[noreturn]] void end_by_signal(const std::string& stopped, const StagedOutputs& staged) {
+  staged.discard();
   std::cout.flush();
   std::fprintf(stderr,
-               "molchaos: reproduce stopped by %s %s; the cache %s keeps every finished run, and "
-               "the same command writes the figures and the report from it\n",
-               interrupt_signals::signal_name(), stopped.c_str(), cache_directory.c_str());
+               "molchaos: reproduce stopped by %s %s; the output folder is as it was, the cache "
+               "%s keeps every finished run, and the same command writes the figures and the "
+               "report from it\n",
+               interrupt_signals::signal_name(), stopped.c_str(), staged.cache().c_str());
   interrupt_signals::end_by_signal();
 }
 
-void stop_if_interrupted(const std::string& stopped, const std::string& cache_directory) {
-  if (interrupt_signals::requested().load()) end_by_signal(stopped, cache_directory);
+void stop_if_interrupted(const std::string& stopped, const StagedOutputs& staged) {
+  if (interrupt_signals::requested().load()) end_by_signal(stopped, staged);
+}
+
+// Figures in --out that this reproduction did not write (it ran with --no-figures, or a quick look
+// into the folder of a paper-scale one, whose break-down figures it has not): named, since the
+// report beside them does not describe them. They are the user's to keep or remove.
+void note_figures_of_other_runs(const std::string& out, const std::vector<std::string>& written) {
+  std::vector<std::string> others;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(out, ec)) {
+    const std::string name = entry.path().filename().string();
+    const std::string extension = entry.path().extension().string();
+    if (name.starts_with("fig") && (extension == ".png" || extension == ".gif") &&
+        std::ranges::find(written, name) == written.end())
+      others.push_back(name);
+  }
+  if (others.empty()) return;
+  std::ranges::sort(others);
+  std::string list;
+  for (const std::string& name : others) list += (list.empty() ? "" : ", ") + name;
+  std::cerr << fmt::format(
+      "note: {} holds {} figure(s) of an earlier reproduction, which the new report does not "
+      "describe: {}\n",
+      out, others.size(), list);
 }
 
 // The command line as the report names it: the options that change what the report says. --out,
@@ -84,7 +155,7 @@ std::string report_command(const ReproduceCliOptions& o, int default_seeds) {
 // temporaries of the figure under way removed.
 std::vector<std::string> render_figures(const validation::ReproduceResults& results,
                                         const figures::RenderOptions& ro,
-                                        const std::string& cache_directory) {
+                                        const StagedOutputs& staged) {
   std::vector<std::string> figure_files;
   const auto keep = [&](const figures::RenderedFigure& f, const char* extension) {
     for (const auto& file : f.files)
@@ -117,10 +188,7 @@ std::vector<std::string> render_figures(const validation::ReproduceResults& resu
     if (figures::gnuplot_has_terminal("gif", ro))
       keep(figures::render_flow_field_animation(results.gas_fields.animation, ro), ".gif");
   } catch (const figures::Interrupted& e) {
-    end_by_signal(fmt::format("while {} (its temporary files removed; {} figure(s) written "
-                              "before it; the tables and the report come after the figures)",
-                              e.what(), figure_files.size()),
-                  cache_directory);
+    end_by_signal(fmt::format("while {}", e.what()), staged);
   }
   return figure_files;
 }
@@ -160,40 +228,35 @@ void run_reproduce(const ReproduceCliOptions& o) {
   interrupt_signals::under_way().store(true);
   validation::withhold_undecidable_verdicts(results.claims, cfg.seeds);
 
-  // From here on the folder's files are replaced: an earlier report there would describe the new
-  // figures of an interrupted run as its own.
-  for (const char* report : {"REPORT.md", "REPORT.html"}) {
-    std::error_code ignored;
-    std::filesystem::remove(std::filesystem::path(o.out) / report, ignored);
-  }
+  const StagedOutputs staged(o.out, sweep.cache_directory);
+  const std::string& dir = staged.path();
   std::vector<std::string> figure_files;
 #ifdef MOLCHAOS_HAVE_FIGURES
   if (!o.no_figures) {
     figures::RenderOptions ro;
-    ro.output_directory = o.out;
+    ro.output_directory = dir;
     ro.interrupt = &interrupt_signals::requested();
-    figure_files = render_figures(results, ro, sweep.cache_directory);
+    figure_files = render_figures(results, ro, staged);
   }
 #endif
-  stop_if_interrupted("after the figures (the tables and the report come after them)",
-                      sweep.cache_directory);
-  validation::write_file_atomically((std::filesystem::path(o.out) / "fig4_A_of_eps.csv").string(),
+  stop_if_interrupted("after the figures", staged);
+  validation::write_file_atomically((std::filesystem::path(dir) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
-  validation::write_file_atomically((std::filesystem::path(o.out) / "a2_of_eps.csv").string(),
+  validation::write_file_atomically((std::filesystem::path(dir) / "a2_of_eps.csv").string(),
                                     validation::a2_csv(results));
-  validation::write_correlation_tables(results.correlations, o.out,
+  validation::write_correlation_tables(results.correlations, dir,
                                        validation::rerun_lines(results.config));
-  validation::write_breakdown_tables(results, o.out);
-  validation::write_estimator_table(results, o.out);
-  stop_if_interrupted("after the tables (no report)", sweep.cache_directory);
+  validation::write_breakdown_tables(results, dir);
+  validation::write_estimator_table(results, dir);
+  stop_if_interrupted("after the tables", staged);
   const std::string markdown =
       validation::report_markdown(results, figure_files, report_command(o, default_seeds));
-  validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.md").string(),
-                                    markdown);
+  validation::write_file_atomically((std::filesystem::path(dir) / "REPORT.md").string(), markdown);
   // The same report as one self-contained page, figures embedded.
-  validation::write_file_atomically((std::filesystem::path(o.out) / "REPORT.html").string(),
-                                    validation::report_html(markdown, o.out));
-  stop_if_interrupted("after writing the report (the output is complete)", sweep.cache_directory);
+  validation::write_file_atomically((std::filesystem::path(dir) / "REPORT.html").string(),
+                                    validation::report_html(markdown, dir));
+  stop_if_interrupted("after writing the report", staged);
+  const std::vector<std::string> written = staged.commit();
   std::cout << fmt::format(
       "wrote {}/REPORT.md, {}/REPORT.html, the tables behind them ({}/*.csv) "
       "and {} figures in {:.0f} s{}\n",
@@ -202,6 +265,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
   std::cout << fmt::format(
       "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
       results.claims.size(), validation::count_not_reproduced(results));
+  std::cout.flush();
+  note_figures_of_other_runs(o.out, written);
   if (results.failed_runs > 0)
     throw std::runtime_error(
         fmt::format("{} run(s) failed; see {}/REPORT.md", results.failed_runs, o.out));

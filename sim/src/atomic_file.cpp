@@ -185,7 +185,7 @@ void remove_stale_temporaries(const std::string& directory, double min_age_secon
     const bool writer_alive =
         writer_host == host && (::kill(std::stoi(pid_text), 0) == 0 || errno == EPERM);
     if (writer_alive || (writer_host != host && age < 86400.0)) continue;
-    fs::remove(entry.path(), ec);
+    fs::remove_all(entry.path(), ec);  // a staging folder of several outputs, too
   }
 }
 

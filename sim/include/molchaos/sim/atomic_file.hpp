@@ -54,8 +54,9 @@ void write_file_atomically(const std::string& path,
 /// output fails at once.
 void probe_writable(const std::string& path);
 
-/// Removes this suite's temporary files in `directory` older than `min_age_seconds` whose writer
-/// is gone (same host, dead PID) or that are older than a day (another host or PID namespace).
+/// Removes this suite's temporary files (and staging folders) in `directory` older than
+/// `min_age_seconds` whose writer is gone (same host, dead PID) or that are older than a day
+/// (another host or PID namespace).
 void remove_stale_temporaries(const std::string& directory, double min_age_seconds = 3600.0);
 
 }  // namespace molchaos::sim
