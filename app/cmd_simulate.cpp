@@ -307,6 +307,17 @@ void run_simulate(const SimulateOptions& options) {
                              " (partial results in " + options.out + ")");
 }
 
+// Whether `path` is a regular file that opens as a checkpoint (anything else is the restart's to
+// refuse, with its own message).
+bool is_checkpoint_file(const std::string& path) {
+  std::error_code ec;
+  if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string start(sim::k_checkpoint_magic.size(), '\0');
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  return in && start == sim::k_checkpoint_magic;
+}
+
 }  // namespace
 
 void add_simulate_command(CLI::App& app) {
@@ -349,16 +360,22 @@ void add_simulate_command(CLI::App& app) {
                   "Wall-clock seconds between checkpoints (0 = none)")
       ->transform(real_in(0, true, std::numeric_limits<double>::infinity(), false));
   cmd->add_option("--restart", checkpoints.restart,
-                  "Continue the run saved in this checkpoint (same parameters; t_end may change): "
-                  "the output is byte for byte the uninterrupted run's")
+                  "Continue the run saved in this checkpoint, its parameters taken from the file "
+                  "unless --config gives them (only t_end may change): the output is byte for "
+                  "byte the uninterrupted run's")
       ->check(path_name());
   cmd->add_option("--write-config", options->write_config,
                   "Also write the run's parameters as a TOML file that --config reads back")
       ->check(path_name());
   const CLI::Option* relax =
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
-  set_callback_with_config(cmd, [options, relax](const std::string& config) {
+  set_callback_with_config(cmd, [cmd, options, relax](const std::string& config) {
     options->config = config;
+    // A restart takes the run's parameters from its checkpoint's head, as --config would, unless
+    // a --config file gives them: `simulate --restart run.ckpt --t-end 200`.
+    if (const std::string& restart = options->checkpoints.restart;
+        config.empty() && is_checkpoint_file(restart))
+      apply_config_file(cmd, restart);
     if (relax->count() == 0) sim::default_relaxation_for_method(options->parameters);
     run_simulate(*options);
   });

@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "cli_support.hpp"
+#include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/csv.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "repeated_options.hpp"
@@ -265,6 +266,22 @@ std::vector<std::string> words(const std::string& value) {
   return found;
 }
 
+// A checkpoint's head: its parameters, "key = value" lines after the first line up to the first
+// line of another form (the empty line that ends the head; a damaged head is the restart's to
+// refuse). Its format, version and layout are no parameters.
+ConfigItems read_checkpoint_head(std::istream& in) {
+  ConfigItems items;
+  std::string line;
+  std::getline(in, line);  // k_checkpoint_magic
+  while (std::getline(in, line)) {
+    const auto eq = line.find(" = ");
+    if (eq == std::string::npos) break;
+    const std::string key = line.substr(0, eq);
+    if (sim::find_parameter(key) != nullptr) items.emplace_back(key, words(line.substr(eq + 3)));
+  }
+  return items;
+}
+
 // A result CSV: "# key = value" lines up to the column line; lists are space separated. A header
 // line without its line end is the end of a file cut short ("# t_end = 20" of "200"): refused.
 ConfigItems read_csv_header(std::istream& in, const std::string& path) {
@@ -399,6 +416,7 @@ ConfigFile read_config_file(const std::string& path) {
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
+  if (text.starts_with(sim::k_checkpoint_magic)) return {read_checkpoint_head(lines), true, true};
   switch (kind_of(text)) {
     case Kind::xyz:
       return {read_xyz_header(lines, path), true, true};

@@ -1,8 +1,9 @@
 // Input files: every subcommand takes its options from a file (--config FILE) as well as from
 // flags, the flags winning. A file is either TOML (key = value; strings, booleans, numbers,
 // one-line arrays; no tables), a result CSV, whose "# key = value" header is read, an H5MD
-// trajectory, whose /parameters attributes are read, or an extended XYZ file, whose first
-// comment line is read (each known by its content, whatever its name):
+// trajectory, whose /parameters attributes are read, an extended XYZ file, whose first
+// comment line is read, or a checkpoint, whose head is read (each known by its content, whatever
+// its name):
 // `simulate --config run.csv` (or run.h5, run.xyz) repeats that run. A key is a
 // parameter table name (t_end, relax_collisions_per_particle) or an option's long name (t-end,
 // relax, seeds); each value goes through the option's own check, so an out-of-range value names
@@ -35,9 +36,9 @@ struct ConfigFile {
   bool run_header = false;
 };
 
-/// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters or an extended XYZ
-/// file's first comment line, told apart by their content; throws UsageError("--config", ...)
-/// naming the file and line of a syntax error.
+/// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters, an extended XYZ
+/// file's first comment line or a checkpoint's head, told apart by their content; throws
+/// UsageError("--config", ...) naming the file and line of a syntax error.
 ConfigFile read_config_file(const std::string& path);
 
 /// Adds --config FILE to cmd; `path` receives it. Call apply_config_file() first thing in cmd's

@@ -19,8 +19,6 @@
 namespace molchaos::sim {
 namespace {
 
-constexpr const char* k_magic = "molchaos checkpoint\n";
-
 // FNV-1a of bytes, continuing from `hash` (the offset basis for a new hash).
 std::uint64_t fnv1a(std::string_view bytes, std::uint64_t hash = 0xcbf29ce484222325ULL) {
   for (const char c : bytes) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
@@ -56,8 +54,9 @@ std::string checkpoint_description(const Parameters& p, const std::string& layou
 void write_checkpoint_file(const std::string& path, const Parameters& p, const std::string& layout,
                            const std::string& payload) {
   const std::uint64_t size = payload.size();
-  std::string head = std::string(k_magic) + "format = " + std::to_string(k_checkpoint_format) +
-                     "\n" + checkpoint_description(p, layout) + "\n";
+  std::string head = std::string(k_checkpoint_magic) +
+                     "format = " + std::to_string(k_checkpoint_format) + "\n" +
+                     checkpoint_description(p, layout) + "\n";
   head.append(reinterpret_cast<const char*>(&size), sizeof size);
   const std::uint64_t checksum = fnv1a(payload, fnv1a(head));
   write_file_atomically(path, [&](std::ostream& out) {
@@ -77,7 +76,7 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   std::ifstream in(path, std::ios::binary);
   if (!in) throw refuse("cannot open");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string magic(k_magic);
+  const std::string magic(k_checkpoint_magic);
   if (text.compare(0, magic.size(), magic) != 0) throw refuse("not a molchaos checkpoint");
   std::size_t at = magic.size();
   std::map<std::string, std::string> head = read_head(text, at, path);

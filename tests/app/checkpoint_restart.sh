@@ -5,7 +5,8 @@
 # the last interval checkpoint of a whole run), by SIGTERM and SIGINT (a checkpoint, exit status
 # 3), and killed by SIGKILL between wall-clock checkpoints (continued from the last one). Contact
 # statistics and a snapshot are on (and a dense case uses neighbour lists), so the observers'
-# accumulators and pending outputs are part of the state.
+# accumulators and pending outputs are part of the state. A restart takes the run's parameters
+# from the checkpoint when no flag gives them.
 set -u
 set -m  # job control: a background job must not start with SIGINT ignored
 bin=$(realpath "$1") dim=$2 mode=$3 particles=$4 t_end=$5 density=$6
@@ -76,7 +77,11 @@ for signal in TERM INT KILL; do
        grep -q "checkpoint written to sig.ckpt" "sig$signal.err" || fail "SIG$signal: no message"
        [ ! -e "sig$signal.csv" ] || fail "SIG$signal: an output written by an interrupted run" ;;
   esac
-  "$bin" "${args[@]}" --t-end "$t_end" --out "sig$signal.csv" --checkpoint sig.ckpt \
+  # After SIGTERM the parameters are left to the checkpoint's head (a run stopped by a signal
+  # wrote no CSV to take them from).
+  again=("${args[@]}")
+  [ "$signal" = TERM ] && again=(simulate --quiet)
+  "$bin" "${again[@]}" --t-end "$t_end" --out "sig$signal.csv" --checkpoint sig.ckpt \
     --restart sig.ckpt 2>/dev/null || fail "restart after SIG$signal"
   same "sig$signal"
 done

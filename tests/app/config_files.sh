@@ -30,7 +30,12 @@ cmp run.csv bom_again.csv || fail "the run repeated from its CSV with a byte ord
 { printf '\xef\xbb\xbf'; cat run.toml; } >bom.toml
 "$bin" simulate --config bom.toml --out bom_toml.csv --quiet 2>/dev/null || fail "run from bom.toml"
 cmp run.csv bom_toml.csv || fail "the run repeated from its TOML with a byte order mark differs"
-echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark) and from its TOML, byte for byte"
+# A checkpoint's head names the run too.
+"$bin" simulate --config run.csv --t-end 3 --out ckpt_run.csv --checkpoint run.ckpt \
+  --checkpoint-interval 1 --quiet 2>/dev/null || fail "run with a checkpoint"
+"$bin" simulate --config run.ckpt --out from_ckpt.csv --quiet 2>/dev/null || fail "run from run.ckpt"
+cmp ckpt_run.csv from_ckpt.csv || fail "the run repeated from its checkpoint's head differs"
+echo "ok: a run repeated from its CSV (LF, CRLF, byte order mark), its TOML and its checkpoint, byte for byte"
 # A file is known by its content, whatever its name, and read once (a pipe can be read only once).
 cp run.csv run.dat
 "$bin" simulate --config run.dat --out dat_again.csv --quiet 2>/dev/null || fail "run from run.dat"

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace molchaos::sim {
 
 /// Increase whenever the payload changes (members added, removed, reordered, or their meaning).
 inline constexpr std::uint32_t k_checkpoint_format = 7;
+/// The first line of a checkpoint file; "key = value" lines follow (format, version, layout and
+/// every parameter), up to an empty line.
+inline constexpr std::string_view k_checkpoint_magic = "molchaos checkpoint\n";
 
 /// A checkpoint that cannot be used for this run: unreadable, corrupt, of another format, version,
 /// dimension or parameters. The message names the file and what differs.
