@@ -266,6 +266,15 @@ std::vector<std::string> words(const std::string& value) {
   return found;
 }
 
+// The word after "molchaos" in a result CSV's title line: "# molchaos sweep summary ..." -> "sweep"
+// (a command's name, or another word: "snapshot").
+std::string writer_named(const std::string& text) {
+  constexpr std::string_view k_prefix = "# molchaos ";
+  if (!text.starts_with(k_prefix)) return {};
+  const std::size_t end = text.find_first_not_of("abcdefghijklmnopqrstuvwxyz", k_prefix.size());
+  return text.substr(k_prefix.size(), end - k_prefix.size());
+}
+
 // A checkpoint's head: its parameters, "key = value" lines after the first line up to the first
 // line of another form (the empty line that ends the head; a damaged head is the restart's to
 // refuse). Its format, version and layout are no parameters.
@@ -401,7 +410,7 @@ ConfigFile read_config_file(const std::string& path) {
     if (!std::filesystem::is_regular_file(path, ec))
       throw UsageError("--config", path + ": an HDF5 file is read from a regular file, not a pipe");
     try {
-      return {io::read_h5md_parameters(path), true, true};
+      return {io::read_h5md_parameters(path), true, true, {}};
     } catch (const std::runtime_error& e) {
       throw UsageError("--config", e.what());
     }
@@ -416,12 +425,14 @@ ConfigFile read_config_file(const std::string& path) {
   if (text.find_first_not_of(" \t\r\n\f\v") == std::string::npos)
     throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
-  if (text.starts_with(sim::k_checkpoint_magic)) return {read_checkpoint_head(lines), true, true};
+  if (text.starts_with(sim::k_checkpoint_magic))
+    return {read_checkpoint_head(lines), true, true, {}};
   switch (kind_of(text)) {
     case Kind::xyz:
-      return {read_xyz_header(lines, path), true, true};
+      return {read_xyz_header(lines, path), true, true, {}};
     case Kind::csv:
-      return {read_csv_header(lines, path), true, text.starts_with(sim::k_run_title)};
+      return {read_csv_header(lines, path), true, text.starts_with(sim::k_run_title),
+              writer_named(text)};
     case Kind::toml:
       if (ends_with(path, ".csv") && !text.starts_with("#"))
         throw UsageError("--config",
@@ -437,7 +448,7 @@ ConfigFile read_config_file(const std::string& path) {
         // A run's parameters as --write-config wrote them are a run's file like its CSV: another
         // command takes the state point from it and names what it has no option for.
         const bool run_parameters = text.starts_with(k_parameters_title);
-        return {std::move(items), run_parameters, run_parameters};
+        return {std::move(items), run_parameters, run_parameters, {}};
       }
   }
   return {};
@@ -516,8 +527,18 @@ std::string parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const 
 
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const auto [items, result_file, run_header] = read_config_file(path);
+  const auto [items, result_file, run_header, writer] = read_config_file(path);
   if (run_header) check_run_header_complete(items, path);
+  // A table of another command (a sweep summary given to theory): its keys are that command's
+  // options, which would be refused one by one as unknown, as if the file were damaged.
+  const CLI::App* program = cmd->get_parent();
+  const bool other_command =
+      program != nullptr && !writer.empty() && writer != cmd->get_name() &&
+      !program->get_subcommands([&](const CLI::App* c) { return c->get_name() == writer; }).empty();
+  if (result_file && !run_header && other_command)
+    throw UsageError("--config", path + ": a table of molchaos " + writer + ", which " +
+                                     cmd->get_name() + " does not read; `molchaos " + writer +
+                                     " --config " + path + "` repeats it");
   // The tables of reproduce describe the study beyond its options: all of it follows from the two
   // they name, quick and seeds, which are required.
   const bool study_table = result_file && cmd->get_name() == "reproduce";

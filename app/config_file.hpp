@@ -34,6 +34,9 @@ struct ConfigFile {
   /// A header of one simulate run (its CSV, XYZ or H5MD outputs), which names every parameter
   /// of the table: one that lacks any was cut short, and is refused.
   bool run_header = false;
+  /// The command that wrote a result CSV, from its title line ("# molchaos sweep summary ..."):
+  /// empty where the file names none.
+  std::string writer;
 };
 
 /// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters, an extended XYZ

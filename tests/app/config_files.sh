@@ -166,7 +166,9 @@ refused "--config: negative_tc.csv: tc: value -1 is outside the allowed range \[
 # A refused file prints no note before its error: the note would say the file was used.
 "$bin" sweep --particles 300 --seeds 2 --restitution 1 --t-end-elastic 5 --cache cache \
   --out for_theory.csv --threads 1 >/dev/null 2>&1 || fail "sweep for theory"
-refused "--config: for_theory.csv: unknown key 'seeds' for theory" theory --config for_theory.csv
+# A table of another command names its writer (was: "unknown key 'seeds'", as if damaged).
+refused "--config: for_theory.csv: a table of molchaos sweep, which theory does not read; .molchaos sweep --config for_theory.csv. repeats it" \
+  theory --config for_theory.csv
 printf 'contacts = yes\n' >flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml
 refused "key 'contacts'.*true or false" simulate --config flag.toml --contacts
