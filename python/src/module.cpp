@@ -220,7 +220,20 @@ constexpr bool is_plain_v =
 // row's name; `dim` also names the dimension); named choices (randomize) are read as the CSV
 // header reads them. Validation stays sim::validate. The checkpoint keywords go to `checkpoints`.
 sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions& checkpoints) {
+  // A restart's parameters are its checkpoint's unless keywords give them (a missing file is the
+  // restart's to refuse: FileNotFoundError).
   sim::Parameters p;
+  bool from_checkpoint = false;
+  if (kwargs.contains("restart"))
+    if (const std::string path = path_keyword("restart", kwargs["restart"]);
+        std::filesystem::is_regular_file(path)) {
+      try {
+        p = sim::checkpoint_parameters(path);
+      } catch (const sim::CheckpointError& e) {
+        throw py::value_error(std::string("restart: ") + e.what());
+      }
+      from_checkpoint = true;
+    }
   std::map<const sim::ParameterInfo*, std::string> given;  // row -> the keyword that set it
   for (auto item : kwargs) {
     const auto name = item.first.cast<std::string>();
@@ -282,7 +295,7 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
         },
         info->field);
   }
-  if (given.count(sim::find_parameter("relax_collisions_per_particle")) == 0)
+  if (!from_checkpoint && given.count(sim::find_parameter("relax_collisions_per_particle")) == 0)
     sim::default_relaxation_for_method(p);
   if (checkpoints.path.empty() && checkpoints.interval > 0)
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
@@ -527,8 +540,9 @@ std::string simulate_doc() {
       "  checkpoint = FILE (str or os.PathLike), checkpoint_interval = DT (simulated time between\n"
       "      checkpoints, >= 0), checkpoint_wall = S (wall-clock seconds between checkpoints,\n"
       "      >= 0): writes the run's whole state;\n"
-      "  restart = FILE: continues a checkpoint (FileNotFoundError if there is none); the result\n"
-      "      equals the uninterrupted run's.\n"
+      "  restart = FILE: continues a checkpoint (FileNotFoundError if there is none), its\n"
+      "      parameters taken from the file where no keyword gives them (only t_end may\n"
+      "      differ); the result equals the uninterrupted run's.\n"
       "\nCtrl-C stops a run called from the main thread at its next sample time or progress\n"
       "pause (at most 2^20 events, in the relaxation too; not while the initial state is\n"
       "built) and raises KeyboardInterrupt; with checkpoint = FILE the run's state at that\n"

@@ -66,6 +66,33 @@ void write_checkpoint_file(const std::string& path, const Parameters& p, const s
   });
 }
 
+Parameters checkpoint_parameters(const std::string& path) {
+  auto refuse = [&](const std::string& what) -> CheckpointError {
+    return CheckpointError("checkpoint " + path + ": " + what);
+  };
+  std::ifstream in(path, std::ios::binary);
+  if (std::error_code ec; !std::filesystem::is_regular_file(path, ec) || !in)
+    throw refuse("cannot open");
+  // The head is a few hundred bytes; 64 KiB holds it with room for long snapshot lists.
+  std::string text(std::size_t{1} << 16, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (!text.starts_with(k_checkpoint_magic)) throw refuse("not a molchaos checkpoint");
+  std::size_t at = k_checkpoint_magic.size();
+  const std::map<std::string, std::string> head = read_head(text, at, path);
+  Parameters p;
+  for (const ParameterInfo& info : parameter_table()) {
+    const auto it = head.find(std::string(info.name));
+    if (it == head.end()) throw refuse("no '" + std::string(info.name) + "' in the head");
+    try {
+      parse_value(p, info, it->second);
+    } catch (const std::invalid_argument& e) {
+      throw refuse(e.what());
+    }
+  }
+  return p;
+}
+
 CheckpointReader read_checkpoint_file(const std::string& path, const Parameters& p,
                                       const std::string& layout, double* saved_t_end) {
   auto refuse = [&](const std::string& what) -> CheckpointError {

@@ -55,9 +55,12 @@ def test_ctrl_c_leaves_a_checkpoint_that_continues_the_run_exactly(tmp_path):
     params = dict(particles=4000, density=0.3, restitution=1.0, randomize="paper", seed=5,
                   t_end=1500.0)
     continued = molchaos.simulate(**params, restart=ckpt)
+    # The parameters left to the checkpoint's head: the same run.
+    bare = molchaos.simulate(restart=ckpt)
     whole = molchaos.simulate(**params)
     for key in ("t", "T", "a2", "collisions", "events"):
         np.testing.assert_array_equal(continued[key], whole[key])
+        np.testing.assert_array_equal(bare[key], whole[key])
 
 
 def test_a_signal_handler_that_raises_stops_the_run():

@@ -145,4 +145,10 @@ void write_checkpoint_file(const std::string& path, const Parameters& p, const s
 CheckpointReader read_checkpoint_file(const std::string& path, const Parameters& p,
                                       const std::string& layout, double* saved_t_end);
 
+/// The parameters of the run a checkpoint holds, from its head (a restart's defaults); throws
+/// CheckpointError for a file that is not a checkpoint or whose head lacks a parameter or holds a
+/// value that does not parse. Neither the ranges nor the checksum are checked here: validate() and
+/// the restart do.
+Parameters checkpoint_parameters(const std::string& path);
+
 }  // namespace molchaos::sim
