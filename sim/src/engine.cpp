@@ -265,8 +265,7 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
     dist2 += d * d;
   }
   if (!(b < 0)) {  // not approaching after all: no collision, and pair_time() agrees
-    predict<Prefetch>(i);
-    predict<Prefetch>(j);
+    predict_pair<Prefetch>(i, j);
     return;
   }
   const double inv_dist = 1.0 / std::sqrt(dist2);
@@ -303,8 +302,7 @@ void Engine<D, Observer>::collide(std::int32_t i, std::int32_t j, const Collisio
     predict<Prefetch>(k);
     predict<Prefetch>(l);
   }
-  predict<Prefetch>(i);
-  predict<Prefetch>(j);
+  predict_pair<Prefetch>(i, j);
 
   if (micro_run_ >= k_collapse_collisions) request_stop(StopReason::collapse);
   if (collision_limit_ != 0 && collisions_ >= collision_limit_)
@@ -339,6 +337,27 @@ template <int D, class Observer>
   const Particle& p = part_[i];
   double best = k_inf;
   int axis = 0;
+#if defined(__SSE2__)
+  if constexpr (D == 2) {
+    // Both axes in one SSE2 pass, each lane with the operations of the loop below (the loop's
+    // selects came out as branches on u == 0, and each axis as a scalar division).
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d u = _mm_loadu_pd(p.v);
+    const int up = _mm_movemask_pd(_mm_cmpgt_pd(u, zero));  // bit a: u_a > 0
+    const __m128d wall =
+        _mm_loadh_pd(_mm_load_sd(&wall_[x[0] + (up & 1)]), &wall_[x[1] + (up >> 1)]);
+    const __m128d ahead = _mm_div_pd(_mm_sub_pd(wall, _mm_loadu_pd(p.r)), u);
+    const __m128d still = _mm_cmpeq_pd(u, zero);  // never crosses along a
+    const __m128d dt =
+        _mm_or_pd(_mm_andnot_pd(still, ahead), _mm_and_pd(still, _mm_set1_pd(k_inf)));
+    const double dt0 = _mm_cvtsd_f64(dt), dt1 = _mm_cvtsd_f64(_mm_unpackhi_pd(dt, dt));
+    axis = dt1 < dt0;  // the first axis wins a tie
+    best = earlier_of(dt0, dt1);
+    ev_[i].cross_time = clock_.now + std::max(best, 0.0);
+    ev_[i].cross_axis = axis;
+    return;
+  }
+#endif
   for (int a = 0; a < D; ++a) {  // branch-free selects: the direction is random
     const double u = p.v[a];
     // wall_[k] = k * cell_width_ (k < cells_per_side_), wall_[cells_per_side_] = box_.
@@ -377,6 +396,13 @@ void Engine<D, Observer>::predict(std::int32_t i) {
     else
       earliest<Prefetch, true>(i, candidates_.data(), count, best, partner);
   }
+  schedule(i, best, partner, x);
+}
+
+template <int D, class Observer>
+[[gnu::always_inline]] inline void Engine<D, Observer>::schedule(std::int32_t i, double best,
+                                                                 std::int32_t partner,
+                                                                 const int* x) {
   ev_[i].coll_time = best;
   ev_[i].partner = partner;
   // Without a partner (-1) the counter is never read: particle 0's is taken (no branch).
@@ -386,6 +412,74 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   else
     crossing(i, x);
   calendar_.update(i, earlier_of(best, ev_[i].cross_time));
+}
+
+// The two particles of a collision touch, so their cells are the same or neighbours and their
+// stencils overlap. Where the cells are the same, or neighbours along the last axis (the
+// outermost of a stencil's order) without the periodic wrap between them, each stencil is a
+// contiguous run of the union's members gathered once: the lower cell's stencil, its lowest layer
+// first, then the layer above it that only the upper cell's stencil holds. Each particle then
+// meets its candidates in the order of its own stencil and selects the partner predict() would;
+// the searches only read records (collide() has moved both particles to clock_.now), so their
+// order does not matter, and the pending events are filed i first, as by predict(i), predict(j).
+// The paper's case: 4 collisions in 5 share a gather (isotropic contacts, cells of 3.2 sigma).
+// Other pairs (neighbours along another axis or across the box boundary) and neighbour lists
+// take two predictions.
+template <int D, class Observer>
+template <bool Prefetch>
+void Engine<D, Observer>::predict_pair(std::int32_t i, std::int32_t j) {
+  const int layer = stride_[D - 1];
+  const int step = ev_[j].cell - ev_[i].cell;  // 0 or +-layer only for the cases above
+  if (neighbour_lists_ || (step != 0 && step != layer && step != -layer)) {
+    predict<Prefetch>(i);
+    predict<Prefetch>(j);
+    return;
+  }
+  assert((links_in_records_ == k_links_in_records<D, Prefetch>));
+  constexpr int unrolled = k_branch_free_members<D, Prefetch>;
+  constexpr bool in_records = k_links_in_records<D, Prefetch>;
+  const std::int32_t lo = step < 0 ? j : i, hi = step < 0 ? i : j;
+  int x_lo[D], x_hi[D];
+  coords_(ev_[lo].cell, x_lo);
+  coords_(ev_[hi].cell, x_hi);
+  int cells[stencil_size<D>() + slab_size<D>()];
+  stencil_of(lo, x_lo, cells);
+  const std::int32_t lowest = gather<slab_size<D>(), unrolled, in_records>(cells);
+  const std::int32_t lo_end =
+      lowest + gather<stencil_size<D>() - slab_size<D>(), unrolled, in_records>(
+                   cells + slab_size<D>(), lowest);
+  const std::int32_t hi_begin = step == 0 ? 0 : lowest;
+  std::int32_t hi_end = lo_end;
+  if (step != 0) {
+    int* above = cells + stencil_size<D>();
+    if (interior_cell(x_hi)) {
+      const int* offset = slab_offset_[2 * (D - 1) + 1].data();
+      for (int s = 0; s < slab_size<D>(); ++s) above[s] = ev_[hi].cell + offset[s];
+    } else {
+      slab_cells<D>(x_hi, cells_per_side_, D - 1, 1, above);
+    }
+    hi_end += gather<slab_size<D>(), unrolled, in_records>(above, lo_end);
+  }
+  std::int32_t* cand = candidates_.data();
+  auto search = [&](std::int32_t k, const int* x, std::int32_t* list, std::int32_t count,
+                    double& best, std::int32_t& partner) {
+    if (interior_cell(x))
+      earliest<Prefetch, false>(k, list, count, best, partner);
+    else
+      earliest<Prefetch, true>(k, list, count, best, partner);
+  };
+  // hi's search first: lo's pads its list at lo_end, among hi's candidates.
+  double best_lo = k_inf, best_hi = k_inf;
+  std::int32_t partner_lo = -1, partner_hi = -1;
+  search(hi, x_hi, cand + hi_begin, hi_end - hi_begin, best_hi, partner_hi);
+  search(lo, x_lo, cand, lo_end, best_lo, partner_lo);
+  if (lo == i) {
+    schedule(i, best_lo, partner_lo, x_lo);
+    schedule(j, best_hi, partner_hi, x_hi);
+  } else {
+    schedule(i, best_hi, partner_hi, x_hi);
+    schedule(j, best_lo, partner_lo, x_lo);
+  }
 }
 
 // Time at which i (at clock_.now) leaves the sphere of radius shell_ around its list centre.
@@ -462,7 +556,7 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
 // systems: most events are crossings).
 template <int D, class Observer>
 template <bool Prefetch>
-void Engine<D, Observer>::cross_cell(std::int32_t i) {
+inline void Engine<D, Observer>::cross_cell(std::int32_t i) {
   advance_particle(i);
   Particle& p = part_[i];
   const int axis = ev_[i].cross_axis;

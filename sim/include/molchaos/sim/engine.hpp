@@ -164,10 +164,21 @@ class Engine {
   void collide(std::int32_t i, std::int32_t j, const CollisionModel& model,
                const Shuffle& shuffle);
   [[gnu::always_inline]] void prefetch_listed_partners(std::int32_t i) const;
+  // Inlined into the event loop, which has most events cross a cell: out of line, its call saved
+  // and restored six registers and spilled more (20 of a crossing's 410 instructions in the
+  // paper's case).
   template <bool Prefetch>
-  void cross_cell(std::int32_t i);
+  [[gnu::always_inline]] void cross_cell(std::int32_t i);
   template <bool Prefetch = false>
   void predict(std::int32_t i);
+  // predict(i), then predict(j), for the two particles of a collision (one gather for both where
+  // their stencils allow it).
+  template <bool Prefetch>
+  void predict_pair(std::int32_t i, std::int32_t j);
+  // The end of a prediction: i's pending event from its earliest partner (best, partner) and its
+  // next bookkeeping event; x its cell coordinates (cells only).
+  [[gnu::always_inline]] void schedule(std::int32_t i, double best, std::int32_t partner,
+                                       const int* x);
   // The hot helpers carry always_inline here, on their declarations: on the out-of-class
   // definitions alone GCC took it as a hint and kept earliest() and advance_particle() out of line
   // in cross_cell() (3 % more instructions per collision in the paper's case).
@@ -179,13 +190,14 @@ class Engine {
   template <bool Wrap>
   [[gnu::always_inline]] std::int32_t keep_neighbours(std::int32_t i, std::int32_t* cand,
                                                       std::int32_t count, std::int32_t lower) const;
-  // The members of the Count cells, to candidates_; InRecords: links_in_records_.
+  // The members of the Count cells, to candidates_ from index `first` on; returns how many.
+  // InRecords: links_in_records_.
   template <int Count, int Unrolled, bool InRecords>
-  [[gnu::always_inline]] std::int32_t gather(const int* cells) {
+  [[gnu::always_inline]] std::int32_t gather(const int* cells, std::int32_t first = 0) {
     if constexpr (InRecords)
-      return members_.gather<Count, Unrolled>(record_links(), cells, candidates_.data());
+      return members_.gather<Count, Unrolled>(record_links(), cells, candidates_.data() + first);
     else
-      return members_.gather<Count, Unrolled>(cell_links_, cells, candidates_.data());
+      return members_.gather<Count, Unrolled>(cell_links_, cells, candidates_.data() + first);
   }
   template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
