@@ -226,15 +226,16 @@ void run_simulate(const SimulateOptions& options) {
     require_distinct_files(files, {{"--restart", checkpoints.restart}});
   }
   {
-    // A snapshot file this run would write that another run wrote (its parameter lines are not
-    // those of the CSV this run replaces: an --out differing only in its extension, run.txt
-    // beside run.csv, names the same snapshots) would be overwritten, and that run's set mixed.
+    // A snapshot file this run would write that another run wrote (a snapshot, or another of its
+    // tables given that name; its parameter lines are not those of the CSV this run replaces: an
+    // --out differing only in its extension, run.txt beside run.csv, names the same snapshots)
+    // would be overwritten, and that run's set mixed.
     const std::vector<std::string> replaced = parameter_lines(options.out);
     for (std::size_t k = 0; k < p.snapshot_times.size(); ++k) {
       const std::string path = snapshot_path(options.out, k);
       const std::vector<std::string> lines = parameter_lines(path);
       if (!lines.empty() && lines != replaced)
-        throw UsageError("--out", path + " holds a snapshot of another run (not of the run in " +
+        throw UsageError("--out", path + " holds results of another run (not of the run in " +
                                       options.out +
                                       "), which this run would overwrite: choose "
                                       "another --out, or remove that file");

@@ -150,7 +150,7 @@ rm stop.snapshot1.csv  # a gap in the replaced run's snapshots: the later one go
 # ... nor overwrites them: a run with snapshots of its own there is refused before it runs.
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --seed 7 --snapshot-times 0.5 --quiet --out ext.txt \
   2>ext.err && fail "a run of --out ext.txt overwrote the snapshot of ext.csv"
-grep -q -- "--out: ext.snapshot0.csv holds a snapshot of another run" ext.err ||
+grep -q -- "--out: ext.snapshot0.csv holds results of another run" ext.err ||
   fail "no refusal naming the other run's snapshot: $(cat ext.err)"
 grep -qx '# seed = 1' ext.snapshot0.csv || fail "ext.csv's snapshot was changed"
 # A run stopped before its first snapshot time keeps its outputs; the table has no rows, and says so.

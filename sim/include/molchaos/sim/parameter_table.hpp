@@ -78,7 +78,8 @@ inline const std::array<ParameterInfo, 16>& parameter_table() {
        {0, false, k_inf, false},
        "sigma^-d",
        "Reduced density n = N sigma^d / V, below close packing (1.1547 for d = 2, 1.41421 for "
-       "d = 3)"},
+       "d = 3), and below the densest start the N particles allow (a lattice, lower for "
+       "spheres; a refusal names it)"},
       {"restitution",
        "--restitution",
        &P::restitution,
