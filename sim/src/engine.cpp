@@ -380,10 +380,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
   int x[D] = {};  // i's cell coordinates (cells only)
   assert((neighbour_lists_ || links_in_records_ == k_links_in_records<D, Prefetch>));
   if (neighbour_lists_) {
-    if (list_needs_wrap(i))
-      earliest<Prefetch, true>(i, lists_.slots(i), lists_.count(i), best, partner);
-    else
-      earliest<Prefetch, false>(i, lists_.slots(i), lists_.count(i), best, partner);
+    search<Prefetch>(list_needs_wrap(i), i, lists_.slots(i), lists_.count(i), best, partner);
   } else {
     coords_(ev_[i].cell, x);
     int stencil[stencil_size<D>()];
@@ -391,10 +388,7 @@ void Engine<D, Observer>::predict(std::int32_t i) {
     // i itself is among the candidates: its pair time is +inf (b = 0).
     const std::int32_t count = gather<stencil_size<D>(), k_branch_free_members<D, Prefetch>,
                                       k_links_in_records<D, Prefetch>>(stencil);
-    if (interior_cell(x))
-      earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
-    else
-      earliest<Prefetch, true>(i, candidates_.data(), count, best, partner);
+    search<Prefetch>(!interior_cell(x), i, candidates_.data(), count, best, partner);
   }
   schedule(i, best, partner, x);
 }
@@ -412,74 +406,6 @@ template <int D, class Observer>
   else
     crossing(i, x);
   calendar_.update(i, earlier_of(best, ev_[i].cross_time));
-}
-
-// The two particles of a collision touch, so their cells are the same or neighbours and their
-// stencils overlap. Where the cells are the same, or neighbours along the last axis (the
-// outermost of a stencil's order) without the periodic wrap between them, each stencil is a
-// contiguous run of the union's members gathered once: the lower cell's stencil, its lowest layer
-// first, then the layer above it that only the upper cell's stencil holds. Each particle then
-// meets its candidates in the order of its own stencil and selects the partner predict() would;
-// the searches only read records (collide() has moved both particles to clock_.now), so their
-// order does not matter, and the pending events are filed i first, as by predict(i), predict(j).
-// The paper's case: 4 collisions in 5 share a gather (isotropic contacts, cells of 3.2 sigma).
-// Other pairs (neighbours along another axis or across the box boundary) and neighbour lists
-// take two predictions.
-template <int D, class Observer>
-template <bool Prefetch>
-void Engine<D, Observer>::predict_pair(std::int32_t i, std::int32_t j) {
-  const int layer = stride_[D - 1];
-  const int step = ev_[j].cell - ev_[i].cell;  // 0 or +-layer only for the cases above
-  if (neighbour_lists_ || (step != 0 && step != layer && step != -layer)) {
-    predict<Prefetch>(i);
-    predict<Prefetch>(j);
-    return;
-  }
-  assert((links_in_records_ == k_links_in_records<D, Prefetch>));
-  constexpr int unrolled = k_branch_free_members<D, Prefetch>;
-  constexpr bool in_records = k_links_in_records<D, Prefetch>;
-  const std::int32_t lo = step < 0 ? j : i, hi = step < 0 ? i : j;
-  int x_lo[D], x_hi[D];
-  coords_(ev_[lo].cell, x_lo);
-  coords_(ev_[hi].cell, x_hi);
-  int cells[stencil_size<D>() + slab_size<D>()];
-  stencil_of(lo, x_lo, cells);
-  const std::int32_t lowest = gather<slab_size<D>(), unrolled, in_records>(cells);
-  const std::int32_t lo_end =
-      lowest + gather<stencil_size<D>() - slab_size<D>(), unrolled, in_records>(
-                   cells + slab_size<D>(), lowest);
-  const std::int32_t hi_begin = step == 0 ? 0 : lowest;
-  std::int32_t hi_end = lo_end;
-  if (step != 0) {
-    int* above = cells + stencil_size<D>();
-    if (interior_cell(x_hi)) {
-      const int* offset = slab_offset_[2 * (D - 1) + 1].data();
-      for (int s = 0; s < slab_size<D>(); ++s) above[s] = ev_[hi].cell + offset[s];
-    } else {
-      slab_cells<D>(x_hi, cells_per_side_, D - 1, 1, above);
-    }
-    hi_end += gather<slab_size<D>(), unrolled, in_records>(above, lo_end);
-  }
-  std::int32_t* cand = candidates_.data();
-  auto search = [&](std::int32_t k, const int* x, std::int32_t* list, std::int32_t count,
-                    double& best, std::int32_t& partner) {
-    if (interior_cell(x))
-      earliest<Prefetch, false>(k, list, count, best, partner);
-    else
-      earliest<Prefetch, true>(k, list, count, best, partner);
-  };
-  // hi's search first: lo's pads its list at lo_end, among hi's candidates.
-  double best_lo = k_inf, best_hi = k_inf;
-  std::int32_t partner_lo = -1, partner_hi = -1;
-  search(hi, x_hi, cand + hi_begin, hi_end - hi_begin, best_hi, partner_hi);
-  search(lo, x_lo, cand, lo_end, best_lo, partner_lo);
-  if (lo == i) {
-    schedule(i, best_lo, partner_lo, x_lo);
-    schedule(j, best_hi, partner_hi, x_hi);
-  } else {
-    schedule(i, best_hi, partner_hi, x_hi);
-    schedule(j, best_lo, partner_lo, x_lo);
-  }
 }
 
 // Time at which i (at clock_.now) leaves the sphere of radius shell_ around its list centre.
@@ -593,10 +519,7 @@ inline void Engine<D, Observer>::cross_cell(std::int32_t i) {
   const std::int32_t count =
       gather<slab_size<D>(), k_branch_free_members<D, Prefetch>, k_links_in_records<D, Prefetch>>(
           slab);
-  if (interior)
-    earliest<Prefetch, false>(i, candidates_.data(), count, best, partner);
-  else
-    earliest<Prefetch, true>(i, candidates_.data(), count, best, partner);
+  search<Prefetch>(!interior, i, candidates_.data(), count, best, partner);
   // best is the old collision time unless a new partner was found (selects, no branch).
   ev_[i].coll_time = best;
   // Masks instead of selects, which the compiler turned into (mispredicted) branches.

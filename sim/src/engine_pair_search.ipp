@@ -1,7 +1,8 @@
 // Part of engine.cpp (included by it, one translation unit): the pair search of a prediction,
 // the hot inner loop of the engine. The contact time of two particles (scalar reference and the
-// SSE2 version for two partners at once), the gathering of a stencil's cell members, and the
-// branch-free selection of the earliest partner.
+// SSE2 version for two partners at once), the gathering of a stencil's cell members, the
+// branch-free selection of the earliest partner, and the shared search of a collision's two
+// particles.
 
 // Time of contact of i (at clock_.now) and j (at its local time), or +inf: the smaller root of
 // |dr + dv t|^2 = 1 in the cancellation-free form t = c / (-b + sqrt(b^2 - v^2 c)). The reference
@@ -213,5 +214,67 @@ template <int D, class Observer>
     for (int s = 0; s < stencil_size<D>(); ++s) stencil[s] = ev_[i].cell + stencil_offset_[s];
   } else {
     neighbour_cells<D>(x, cells_per_side_, stencil);
+  }
+}
+
+// The two particles of a collision touch, so their cells are the same or neighbours and their
+// stencils overlap. Where the cells are the same, or neighbours along the last axis (the
+// outermost of a stencil's order) without the periodic wrap between them, each stencil is a
+// contiguous run of the union's members gathered once: the lower cell's stencil, its lowest layer
+// first, then the layer above it that only the upper cell's stencil holds. Each particle then
+// meets its candidates in the order of its own stencil and selects the partner predict() would;
+// the searches only read records (collide() has moved both particles to clock_.now), so their
+// order does not matter, and the pending events are filed i first, as by predict(i), predict(j).
+// The paper's case: 4 collisions in 5 share a gather (isotropic contacts, cells of 3.2 sigma).
+// Other pairs (neighbours along another axis or across the box boundary) and neighbour lists
+// take two predictions.
+template <int D, class Observer>
+template <bool Prefetch>
+void Engine<D, Observer>::predict_pair(std::int32_t i, std::int32_t j) {
+  const int layer = stride_[D - 1];
+  const int step = ev_[j].cell - ev_[i].cell;  // 0 or +-layer only for the cases above
+  if (neighbour_lists_ || (step != 0 && step != layer && step != -layer)) {
+    predict<Prefetch>(i);
+    predict<Prefetch>(j);
+    return;
+  }
+  assert((links_in_records_ == k_links_in_records<D, Prefetch>));
+  constexpr int unrolled = k_branch_free_members<D, Prefetch>;
+  constexpr bool in_records = k_links_in_records<D, Prefetch>;
+  const std::int32_t lo = step < 0 ? j : i, hi = step < 0 ? i : j;
+  int x_lo[D], x_hi[D];
+  coords_(ev_[lo].cell, x_lo);
+  coords_(ev_[hi].cell, x_hi);
+  int cells[stencil_size<D>() + slab_size<D>()];
+  stencil_of(lo, x_lo, cells);
+  const std::int32_t lowest = gather<slab_size<D>(), unrolled, in_records>(cells);
+  const std::int32_t lo_end =
+      lowest + gather<stencil_size<D>() - slab_size<D>(), unrolled, in_records>(
+                   cells + slab_size<D>(), lowest);
+  const std::int32_t hi_begin = step == 0 ? 0 : lowest;
+  std::int32_t hi_end = lo_end;
+  if (step != 0) {
+    int* above = cells + stencil_size<D>();
+    if (interior_cell(x_hi)) {
+      const int* offset = slab_offset_[2 * (D - 1) + 1].data();
+      for (int s = 0; s < slab_size<D>(); ++s) above[s] = ev_[hi].cell + offset[s];
+    } else {
+      slab_cells<D>(x_hi, cells_per_side_, D - 1, 1, above);
+    }
+    hi_end += gather<slab_size<D>(), unrolled, in_records>(above, lo_end);
+  }
+  std::int32_t* cand = candidates_.data();
+  // hi's search first: lo's pads its list at lo_end, among hi's candidates.
+  double best_lo = k_inf, best_hi = k_inf;
+  std::int32_t partner_lo = -1, partner_hi = -1;
+  search<Prefetch>(!interior_cell(x_hi), hi, cand + hi_begin, hi_end - hi_begin, best_hi,
+                   partner_hi);
+  search<Prefetch>(!interior_cell(x_lo), lo, cand, lo_end, best_lo, partner_lo);
+  if (lo == i) {
+    schedule(i, best_lo, partner_lo, x_lo);
+    schedule(j, best_hi, partner_hi, x_hi);
+  } else {
+    schedule(i, best_hi, partner_hi, x_hi);
+    schedule(j, best_lo, partner_lo, x_lo);
   }
 }

@@ -202,6 +202,16 @@ class Engine {
   template <bool Prefetch, bool Wrap = true>
   [[gnu::always_inline]] void earliest(std::int32_t i, std::int32_t* list, std::int32_t count,
                                        double& best, std::int32_t& partner) const;
+  // earliest() with the wrap where `wrap` says (a cell on the box boundary, a list near it).
+  template <bool Prefetch>
+  [[gnu::always_inline]] void search(bool wrap, std::int32_t i, std::int32_t* list,
+                                     std::int32_t count, double& best,
+                                     std::int32_t& partner) const {
+    if (wrap)
+      earliest<Prefetch, true>(i, list, count, best, partner);
+    else
+      earliest<Prefetch, false>(i, list, count, best, partner);
+  }
   [[gnu::always_inline]] bool interior_cell(const int* x) const;
   [[gnu::always_inline]] bool list_needs_wrap(std::int32_t i) const;
   [[gnu::always_inline]] void stencil_of(std::int32_t i, const int* x, int* stencil) const;
