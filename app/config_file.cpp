@@ -275,19 +275,19 @@ std::string writer_named(const std::string& text) {
   return text.substr(k_prefix.size(), end - k_prefix.size());
 }
 
-// A checkpoint's head: its parameters, "key = value" lines after the first line up to the first
-// line of another form (the empty line that ends the head; a damaged head is the restart's to
-// refuse). Its format, version and layout are no parameters.
-ConfigItems read_checkpoint_head(std::istream& in) {
-  ConfigItems items;
-  std::string line;
-  std::getline(in, line);  // k_checkpoint_magic
-  while (std::getline(in, line)) {
-    const auto eq = line.find(" = ");
-    if (eq == std::string::npos) break;
-    const std::string key = line.substr(0, eq);
-    if (sim::find_parameter(key) != nullptr) items.emplace_back(key, words(line.substr(eq + 3)));
+// A checkpoint's head (sim::checkpoint_head): its parameters in the table's order, as a run's CSV
+// header names them (its format, version and layout are no parameters).
+ConfigItems read_checkpoint_head(const std::string& text, const std::string& path) {
+  std::map<std::string, std::string> head;
+  try {
+    head = sim::checkpoint_head(text, path);
+  } catch (const sim::CheckpointError& e) {
+    throw UsageError("--config", e.what());
   }
+  ConfigItems items;
+  for (const sim::ParameterInfo& info : sim::parameter_table())
+    if (const auto it = head.find(std::string(info.name)); it != head.end())
+      items.emplace_back(it->first, words(it->second));
   return items;
 }
 
@@ -426,7 +426,7 @@ ConfigFile read_config_file(const std::string& path) {
     throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
   if (text.starts_with(sim::k_checkpoint_magic))
-    return {read_checkpoint_head(lines), true, true, {}};
+    return {read_checkpoint_head(text, path), true, true, {}};
   switch (kind_of(text)) {
     case Kind::xyz:
       return {read_xyz_header(lines, path), true, true, {}};

@@ -66,6 +66,14 @@ void write_checkpoint_file(const std::string& path, const Parameters& p, const s
   });
 }
 
+std::map<std::string, std::string> checkpoint_head(const std::string& text,
+                                                   const std::string& path) {
+  if (!text.starts_with(k_checkpoint_magic))
+    throw CheckpointError("checkpoint " + path + ": not a molchaos checkpoint");
+  std::size_t at = k_checkpoint_magic.size();
+  return read_head(text, at, path);
+}
+
 Parameters checkpoint_parameters(const std::string& path) {
   auto refuse = [&](const std::string& what) -> CheckpointError {
     return CheckpointError("checkpoint " + path + ": " + what);
@@ -77,9 +85,7 @@ Parameters checkpoint_parameters(const std::string& path) {
   std::string text(std::size_t{1} << 16, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   text.resize(static_cast<std::size_t>(in.gcount()));
-  if (!text.starts_with(k_checkpoint_magic)) throw refuse("not a molchaos checkpoint");
-  std::size_t at = k_checkpoint_magic.size();
-  const std::map<std::string, std::string> head = read_head(text, at, path);
+  const std::map<std::string, std::string> head = checkpoint_head(text, path);
   Parameters p;
   for (const ParameterInfo& info : parameter_table()) {
     const auto it = head.find(std::string(info.name));

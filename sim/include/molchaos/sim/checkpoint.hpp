@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -144,6 +145,12 @@ void write_checkpoint_file(const std::string& path, const Parameters& p, const s
 /// time. Returns the payload, and in *saved_t_end the t_end of the run that wrote it.
 CheckpointReader read_checkpoint_file(const std::string& path, const Parameters& p,
                                       const std::string& layout, double* saved_t_end);
+
+/// The "key = value" lines of a checkpoint's head (format, version, layout and every parameter),
+/// from `text`, the file or its start; throws CheckpointError naming `path` for a text that is no
+/// checkpoint or whose head is cut short or corrupt.
+std::map<std::string, std::string> checkpoint_head(const std::string& text,
+                                                   const std::string& path);
 
 /// The parameters of the run a checkpoint holds, from its head (a restart's defaults); throws
 /// CheckpointError for a file that is not a checkpoint or whose head lacks a parameter or holds a
