@@ -1,0 +1,21 @@
+// The TOML files --config reads (config_file.hpp): key = value lines of strings (TOML's escapes
+// decoded), bare numbers (digits grouped by underscores) and booleans, and one-line arrays of
+// them; tables, inline tables and nested arrays are refused, as is anything TOML does not allow
+// that would otherwise run other settings than the file meant.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "config_file.hpp"
+
+namespace molchaos::app {
+
+/// The items of a TOML file, in file order, each value as its option reads it (strings without
+/// quotes); throws UsageError("--config", ...) naming `path` and the line of a syntax error.
+ConfigItems read_toml(std::istream& in, const std::string& path);
+
+/// `text` without the spaces, tabs and carriage returns around it.
+std::string trim(const std::string& text);
+
+}  // namespace molchaos::app
