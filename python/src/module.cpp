@@ -9,7 +9,6 @@
 #include <atomic>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <exception>
 #include <filesystem>
@@ -31,6 +30,7 @@
 #include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/version.hpp"
+#include "sigint_watch.hpp"
 
 namespace py = pybind11;
 
@@ -389,59 +389,6 @@ py::array_t<double> particle_matrix(const std::vector<double>& flat, int dimensi
   return a;
 }
 
-// Ctrl-C during a run. Python's own SIGINT handler only notes the signal, and the interpreter runs
-// the Python handler (KeyboardInterrupt) when it next executes Python code: after the run, which
-// may take hours. While a run started from the main thread goes on, a handler in front of Python's
-// also asks the run to stop (CheckpointOptions::interrupt): it stops at its next sample time or
-// progress pause (at most 2^20 events, the relaxation's included), writes its checkpoint if it
-// has a path and the relaxation is done (a half-relaxed state has none), and KeyboardInterrupt
-// is raised. Signals with other Python handlers (a SIGINT or SIGTERM handler of the caller's, an
-// alarm) are run at the sample times and progress pauses, and stop the run when they raise.
-std::atomic<bool> g_interrupt_requested{false};
-struct sigaction g_python_sigint {};
-
-void on_sigint(int signal) {
-  g_interrupt_requested.store(true);
-  g_python_sigint.sa_handler(signal);  // Python's: notes the signal for the interpreter
-}
-
-bool in_main_thread() {
-  const py::module_ threading = py::module_::import("threading");
-  const py::object main_ident = threading.attr("main_thread")().attr("ident");
-  return main_ident.equal(threading.attr("get_ident")());
-}
-
-// Puts on_sigint in front of Python's SIGINT handler for its lifetime: in the main thread, and only
-// where SIGINT raises KeyboardInterrupt (not where it is ignored, left to the system's default or
-// given to a handler of the caller's).
-class SigintWatch {
- public:
-  SigintWatch() {
-    g_interrupt_requested.store(false);
-    if (!in_main_thread()) return;
-    const py::module_ signal_module = py::module_::import("signal");
-    if (!signal_module.attr("getsignal")(SIGINT).is(signal_module.attr("default_int_handler")))
-      return;
-    struct sigaction current {};
-    if (sigaction(SIGINT, nullptr, &current) != 0) return;
-    if ((current.sa_flags & SA_SIGINFO) != 0 || current.sa_handler == SIG_DFL ||
-        current.sa_handler == SIG_IGN)
-      return;
-    g_python_sigint = current;
-    struct sigaction ours = current;
-    ours.sa_handler = on_sigint;
-    installed_ = sigaction(SIGINT, &ours, nullptr) == 0;
-  }
-  ~SigintWatch() {
-    if (installed_) sigaction(SIGINT, &g_python_sigint, nullptr);
-  }
-  SigintWatch(const SigintWatch&) = delete;
-  SigintWatch& operator=(const SigintWatch&) = delete;
-
- private:
-  bool installed_ = false;
-};
-
 struct RunInterrupted {};  // thrown out of a DSMC run, which has no interrupt of its own
 
 py::dict simulate(const py::kwargs& kwargs) {
@@ -452,16 +399,16 @@ py::dict simulate(const py::kwargs& kwargs) {
   std::optional<sim::RunResult> result;
   {
     const SigintWatch watch;
-    checkpoints.interrupt = &g_interrupt_requested;
+    checkpoints.interrupt = &interrupt_requested();
     const sim::ProgressReporter look_at_signals = [&](const sim::Progress&) {
-      if (main_thread && !g_interrupt_requested.load()) {
+      if (main_thread && !interrupt_requested().load()) {
         const py::gil_scoped_acquire gil;
         if (PyErr_CheckSignals() != 0) {
           signal_error.emplace();  // takes the exception the handler raised
-          g_interrupt_requested.store(true);
+          interrupt_requested().store(true);
         }
       }
-      if (p.method == sim::Method::dsmc && g_interrupt_requested.load()) throw RunInterrupted{};
+      if (p.method == sim::Method::dsmc && interrupt_requested().load()) throw RunInterrupted{};
     };
     try {
       py::gil_scoped_release release;  // the engine touches no Python object
