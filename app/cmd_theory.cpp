@@ -4,30 +4,21 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <array>
-#include <chrono>
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <memory>
-#include <optional>
-#include <nlohmann/json.hpp>
-#include <utility>
-#include <vector>
+#include <string>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
-#include "molchaos/theory/collision_moments.hpp"
-#include "molchaos/theory/contact_response.hpp"
 #include "molchaos/theory/contact_value.hpp"
-#include "molchaos/theory/cooling.hpp"
 #include "molchaos/theory/correlation_range.hpp"
 #include "molchaos/theory/dimension.hpp"
 #include "molchaos/theory/exact_values.hpp"
-#include "molchaos/theory/paper_checks.hpp"
 #include "molchaos/theory/sonine.hpp"
-#include "molchaos/theory/sonine_hcs.hpp"
+#include "molchaos/theory/theory_report.hpp"
+#include "molchaos/theory/theory_report_json.hpp"
 #include "molchaos/version.hpp"
 #include "parameter_options.hpp"
 #include "theory_hydrodynamics_output.hpp"
@@ -54,10 +45,6 @@ theory::QuadratureOptions quadrature_of(const TheoryOptions& o) {
                                         : theory::QuadratureMethod::gauss;
   q.relative_tolerance = o.tolerance;
   return q;
-}
-
-nlohmann::json number_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
 // A number in text without a sign on zero: "-0" or "-0.0000" (−0, or a tiny negative value
@@ -92,27 +79,6 @@ std::string general(double value, double error, int most) {
     digits = std::clamp(magnitude - last_digit_exponent(error) + 1, 1, most);
   }
   return unsigned_zero(fmt::format("{:.{}g}", value, digits));
-}
-
-nlohmann::json to_json(const theory::PaperCheck& c, const std::string& term) {
-  nlohmann::json row;
-  if (!term.empty())
-    row["term"] = term;
-  else
-    row["quantity"] = c.quantity;
-  row["paper"] = c.paper ? nlohmann::json(*c.paper) : nlohmann::json(nullptr);
-  row["computed"] = c.computed;
-  row["error"] = c.error;
-  row["reproduced"] = c.reproduced ? nlohmann::json(*c.reproduced) : nlohmann::json(nullptr);
-  if (c.paper) row["difference"] = c.computed - *c.paper;
-  if (!c.note.empty()) row["note"] = c.note;
-  return row;
-}
-
-// The exact form the symbolic derivation gives for a μ2 coefficient ("-" where it has none).
-std::string exact_text(int dimension, double dyad_factor, const std::string& term) {
-  const auto* t = theory::exact::find_moment_term(dimension, 2, dyad_factor, term);
-  return t ? t->coefficient_text : "-";
 }
 
 std::string verdict_text(const theory::PaperCheck& c) {
@@ -155,179 +121,18 @@ void validate_theory_inputs(const TheoryOptions& o) {
     throw UsageError("--b", fmt::format("value {} is outside the {}", o.correlation_b, allowed));
 }
 
-// Everything `molchaos theory` prints, computed once.
-struct TheoryResults {
-  theory::CoolingPrediction prediction;
-  theory::ExpansionTable table, traceless;
-  std::vector<theory::PaperCheck> coefficient_rows, prefactor_rows;
-  theory::CorrelationRange b_range;
-  theory::HcsSonine sonine;
-  /// A with each level's a2, a3 and the given b; none where that μ2 is not positive beyond its
-  /// error (the b range makes sure of it for the first level only): the gas would not cool.
-  std::array<std::optional<theory::Estimate>, 4> A_by_level;
-  std::array<theory::Estimate, 4> mu2_ratio_at_b;  ///< μ2/μ2(0,0) behind each A, at the given b
-  theory::ContactResponse contact, contact_traceless;
-  double seconds = 0.0;
-};
-
-std::array<const theory::SonineSolution*, 4> levels(const theory::HcsSonine& h) {
-  return {&h.first_sonine, &h.a2_nonlinear, &h.a2_a3_linear, &h.a2_a3};
+theory::ReportInputs report_inputs(const TheoryOptions& o, const theory::BoxInputs& box) {
+  theory::ReportInputs in;
+  in.dimension = o.dimension;
+  in.restitution = o.restitution;
+  in.density = o.density;
+  in.correlation_b = o.correlation_b;
+  in.quadrature = quadrature_of(o);
+  in.box = box;
+  return in;
 }
 
-TheoryResults compute_theory(const TheoryOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  const theory::QuadratureOptions quad = quadrature_of(o);
-  TheoryResults r;
-  theory::CoolingInputs inputs;
-  inputs.dimension = o.dimension;
-  inputs.density = o.density;
-  inputs.restitution = o.restitution;
-  inputs.correlation_b = o.correlation_b;
-  inputs.quadrature = quad;
-  try {
-    r.prediction = theory::predict_cooling(inputs);  // refuses a density where τ0 overflows
-  } catch (const std::invalid_argument& e) {
-    throw_as_usage_error("theory", e.what());
-  }
-  // Coefficients are ε-independent for μ2; evaluated at ε = 1/2 so that ε = 1 input works too.
-  r.table = theory::expand_collision_moment(o.dimension, 2, 0.5, theory::k_paper_dyad_factor, quad);
-  // The printed dyad 3·ee − U is traceless only in d = 3; in d = 2 the traceless one is 2·ee − U.
-  r.traceless = o.dimension == 3
-                    ? r.table
-                    : theory::expand_collision_moment(o.dimension, 2, 0.5, o.dimension, quad);
-  r.coefficient_rows = theory::coefficient_checks(r.table);
-  r.prefactor_rows = theory::prefactor_checks(o.dimension, quad);
-  r.b_range = theory::correlation_b_range(o.dimension, r.prediction.a2, theory::k_paper_dyad_factor,
-                                          quad, r.prediction.a2_error);
-  // The second-order Sonine theory and the contact response always use the exact Gauss rules
-  // (the adaptive check of these 2 × 12 + 12 terms would take minutes; the tests run it).
-  const theory::QuadratureOptions gauss;
-  r.sonine = theory::hcs_sonine_coefficients(o.dimension, o.restitution, gauss);
-  const auto with_a3 = theory::expand_collision_moment(
-      o.dimension, 2, 0.5, theory::k_paper_dyad_factor, gauss, theory::SonineTerms::a2_a3);
-  const auto lv = levels(r.sonine);
-  for (std::size_t i = 0; i < lv.size(); ++i) {
-    const theory::PairShape shape{lv[i]->a2.value, lv[i]->a3.value, o.correlation_b};
-    const theory::Estimate ratio = with_a3.ratio_estimate(shape);
-    // The Sonine coefficients' own errors carried through ∂ratio/∂a (central differences of an
-    // exactly quadratic polynomial).
-    const double h = 1e-3;
-    auto slope = [&](double da2, double da3) {
-      const theory::PairShape up{shape.a2 + da2, shape.a3 + da3, shape.b};
-      const theory::PairShape down{shape.a2 - da2, shape.a3 - da3, shape.b};
-      return std::abs(with_a3.ratio(up) - with_a3.ratio(down)) / (2.0 * h);
-    };
-    const double ratio_error =
-        ratio.error + slope(h, 0.0) * lv[i]->a2.error + slope(0.0, h) * lv[i]->a3.error;
-    r.mu2_ratio_at_b[i] = {ratio.value, ratio_error};
-    if (ratio.value > ratio_error)
-      r.A_by_level[i] =
-          theory::cooling_prefactor_A(o.dimension, o.density, 1.0, {ratio.value, ratio_error});
-  }
-  // The first level is the header's prediction (first-Sonine a2, a3 = 0, the given b): one
-  // quantity, so one value and one error, the prediction's (which carries the quadrature's
-  // uncertainty of that a2 too). Not under --quadrature adaptive, whose prediction is by another
-  // rule than this table. The rule of the other levels holds: no A where μ2 is not positive
-  // beyond its error.
-  if (quad.method == theory::QuadratureMethod::gauss) {
-    r.mu2_ratio_at_b[0] = r.prediction.mu2_ratio;
-    r.A_by_level[0] = std::nullopt;
-    if (r.prediction.mu2_ratio.value > r.prediction.mu2_ratio.error)
-      r.A_by_level[0] = r.prediction.A;
-  }
-  r.contact = theory::contact_response(o.dimension, theory::k_paper_dyad_factor, gauss);
-  r.contact_traceless = theory::contact_response(o.dimension, o.dimension, gauss);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
-}
-
-nlohmann::json to_json(const theory::Estimate& e) {
-  return {{"value", e.value}, {"error", e.error}};
-}
-
-// The contact response's five quantities by the names the symbolic derivation gives them.
-std::array<std::pair<const char*, const theory::ResponseSeries*>, 5> contact_rows(
-    const theory::ContactResponse& c) {
-  return {{{"normal_product", &c.normal_product},
-           {"velocity_product", &c.velocity_product},
-           {"dyad", &c.dyad},
-           {"collision_frequency_ratio", &c.collision_frequency_ratio},
-           {"dissipation_ratio", &c.dissipation_ratio}}};
-}
-
-nlohmann::json to_json(const theory::ContactResponse& c) {
-  nlohmann::json j;
-  j["dyad_factor"] = c.dyad_factor;
-  for (const auto& [name, s] : contact_rows(c)) {
-    const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
-    j[name] = {{"value", to_json(s->value)},
-               {"d_a2", to_json(s->d_a2)},
-               {"d_b", to_json(s->d_b)},
-               {"d_a2b", to_json(s->d_a2b)}};
-    if (x) j[name]["exact"] = {x->texts[0], x->texts[1], x->texts[2], x->texts[3]};
-  }
-  return j;
-}
-
-void print_theory_json(const TheoryOptions& o, const TheoryResults& r,
-                       const HydrodynamicsOptions& h) {
-  const auto& p = r.prediction;
-  nlohmann::json j;
-  j["version"] = k_version;
-  j["inputs"] = {{"dim", o.dimension},         {"restitution", o.restitution},
-                 {"density", o.density},       {"b", o.correlation_b},
-                 {"initial_temperature", 1.0}, {"quadrature", o.quadrature},
-                 {"tolerance", o.tolerance},   {"units", "sigma = m = k_B = 1; T = m<v^2>/d"}};
-  j["packing_fraction"] = p.packing_fraction;
-  j["g2"] = p.g2;
-  j["g2_extrapolated"] = theory::g2_extrapolated(o.dimension, p.packing_fraction);
-  j["a2"] = p.a2;
-  j["mu2"] = p.mu2.value;
-  j["mu2_error"] = p.mu2.error;
-  j["mu2_ratio"] = p.mu2_ratio.value;
-  j["omega0"] = p.omega0;
-  j["tau0"] = number_or_null(p.tau0.value);
-  j["tau0_error"] = number_or_null(p.tau0.value).is_null() ? nlohmann::json(nullptr)
-                                                           : nlohmann::json(p.tau0.error);
-  j["A"] = p.A.value;
-  j["A_error"] = p.A.error;
-  j["A_uncorrelated"] = p.A_uncorrelated.value;
-  j["enskog_collision_frequency"] = p.enskog_collision_frequency;
-  j["b_range"] = {{"lower", r.b_range.lower},
-                  {"upper", number_or_null(r.b_range.upper)},
-                  {"upper_error", r.b_range.upper_error}};
-  j["coefficients"] = nlohmann::json::array();
-  for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
-    j["coefficients"].push_back(to_json(r.coefficient_rows[i], r.table.terms[i].name));
-    j["coefficients"].back()["exact"] =
-        exact_text(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name);
-  }
-  j["coefficients_traceless_dyad"] = nlohmann::json::array();
-  for (const auto& t : r.traceless.terms)
-    j["coefficients_traceless_dyad"].push_back(
-        {{"term", t.name},
-         {"computed", t.coefficient.value},
-         {"error", t.coefficient.error},
-         {"exact", exact_text(o.dimension, o.dimension, t.name)}});
-  j["prefactors"] = nlohmann::json::array();
-  for (const auto& row : r.prefactor_rows) j["prefactors"].push_back(to_json(row, ""));
-  j["sonine"] = nlohmann::json::array();
-  const auto lv = levels(r.sonine);
-  for (std::size_t i = 0; i < lv.size(); ++i)
-    j["sonine"].push_back({{"level", lv[i]->level},
-                           {"a2", to_json(lv[i]->a2)},
-                           {"a3", to_json(lv[i]->a3)},
-                           {"mu2_ratio", to_json(lv[i]->mu2_ratio)},
-                           {"mu2_ratio_at_b", to_json(r.mu2_ratio_at_b[i])},
-                           {"A", r.A_by_level[i] ? to_json(*r.A_by_level[i]) : nullptr}});
-  j["contact_response"] = {{"printed_dyad", to_json(r.contact)},
-                           {"traceless_dyad", to_json(r.contact_traceless)}};
-  add_hydrodynamics_json(j, o.dimension, o.restitution, o.density, h);
-  j["seconds"] = r.seconds;
-  std::cout << j.dump(2) << '\n';
-}
-
-void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
+void print_prediction_text(const TheoryOptions& o, const theory::TheoryReport& r) {
   const auto& p = r.prediction;
   std::cout << fmt::format("molchaos {} — kinetic theory, d = {}, ε = {}, n = {}, b = {}\n",
                            k_version, o.dimension, o.restitution, o.density, o.correlation_b);
@@ -359,7 +164,7 @@ void print_prediction_text(const TheoryOptions& o, const TheoryResults& r) {
   std::cout << fmt::format("  allowed b            {}\n\n", theory::range_text(r.b_range, 6));
 }
 
-void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
+void print_coefficients_text(const TheoryOptions& o, const theory::TheoryReport& r) {
   std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9} {:>10}  {}\n", "μ2/μ2(0,0) coefficient",
                            "paper", "computed", "error", "exact", "verdict");
   for (std::size_t i = 0; i < r.coefficient_rows.size(); ++i) {
@@ -367,7 +172,7 @@ void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
     std::cout << fmt::format(
         "{:<34} {:>14} {:>20} {:>9.1e} {:>10}  {}\n", c.quantity,
         c.paper ? fmt::format("{:.6f}", *c.paper) : "-", fixed(c.computed, c.error, 15), c.error,
-        exact_text(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name),
+        theory::exact_form(o.dimension, theory::k_paper_dyad_factor, r.table.terms[i].name),
         verdict_text(c));
   }
   std::cout << (o.dimension == 3
@@ -375,10 +180,10 @@ void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
                     : std::string(
                           "\ntraceless dyad (2·ee − U) instead of the printed 3·ee − U:\n"));
   for (const auto& t : r.traceless.terms)
-    std::cout << fmt::format("{:<34} {:>14} {:>20} {:>9.1e} {:>10}\n",
-                             "μ2 coefficient of " + t.name, "-",
-                             fixed(t.coefficient.value, t.coefficient.error, 15),
-                             t.coefficient.error, exact_text(o.dimension, o.dimension, t.name));
+    std::cout << fmt::format(
+        "{:<34} {:>14} {:>20} {:>9.1e} {:>10}\n", "μ2 coefficient of " + t.name, "-",
+        fixed(t.coefficient.value, t.coefficient.error, 15), t.coefficient.error,
+        theory::exact_form(o.dimension, o.dimension, t.name));
   std::cout << fmt::format("\n{:<52} {:>10} {:>14} {:>9}  {}\n", "prefactor", "paper", "computed",
                            "error", "verdict");
   for (const auto& c : r.prefactor_rows)
@@ -387,19 +192,19 @@ void print_coefficients_text(const TheoryOptions& o, const TheoryResults& r) {
                              c.error, verdict_text(c));
 }
 
-void print_sonine_text(const TheoryOptions& o, const TheoryResults& r) {
+void print_sonine_text(const TheoryOptions& o, const theory::TheoryReport& r) {
   std::cout << fmt::format(
       "\nhomogeneous cooling state beyond the first Sonine term (b = {}):\n{:<14} {:>22} "
       "{:>22} {:>22}\n",
       o.correlation_b, "level", "a2", "a3", "A");
-  const auto lv = levels(r.sonine);
+  const auto lv = theory::levels(r.sonine);
   for (std::size_t i = 0; i < lv.size(); ++i) {
     const auto& A = r.A_by_level[i];
     std::cout << fmt::format(
         "{:<14} {:>13} ± {:<6.1e} {:>13} ± {:<6.1e} {:>22}\n", lv[i]->level,
         fixed(lv[i]->a2.value, lv[i]->a2.error, 10), lv[i]->a2.error,
         fixed(lv[i]->a3.value, lv[i]->a3.error, 10), lv[i]->a3.error,
-        A ? fmt::format("{:>13} ± {:<6.1e}", fixed(A->value, A->error, 9), A->error)
+        A ? fmt::format("{:>13} ± {:<6.1e}", general(A->value, A->error, 12), A->error)
           : std::string("none: μ2 ≤ 0, no cooling"));
   }
 }
@@ -409,7 +214,7 @@ void print_contact_text(const theory::ContactResponse& c) {
       "\ncolliding pairs under f2 = f f g2 [1 + b D], D = {}·ee − U, to first order:\n"
       "{:<26} {:>26} {:>26} {:>26} {:>26}\n",
       c.dyad_factor, "quantity", "value (exact)", "∂/∂a2", "∂/∂b", "∂²/∂a2∂b");
-  for (const auto& [name, s] : contact_rows(c)) {
+  for (const auto& [name, s] : theory::contact_rows(c)) {
     const auto* x = theory::exact::find_contact_term(c.dimension, c.dyad_factor, name);
     auto cell = [&](const theory::Estimate& e, int k) {
       return fmt::format("{} ({:>5})", unsigned_zero(fmt::format("{:.12f}", e.value)),
@@ -420,14 +225,14 @@ void print_contact_text(const theory::ContactResponse& c) {
   }
 }
 
-void print_theory_text(const TheoryOptions& o, const TheoryResults& r,
-                       const HydrodynamicsOptions& h) {
+void print_theory_text(const TheoryOptions& o, const theory::ReportInputs& in,
+                       const theory::TheoryReport& r) {
   print_prediction_text(o, r);
   print_coefficients_text(o, r);
   print_sonine_text(o, r);
   print_contact_text(r.contact);
   if (o.dimension == 2) print_contact_text(r.contact_traceless);
-  std::cout << hydrodynamics_text(o.dimension, o.restitution, o.density, h);
+  std::cout << hydrodynamics_text(in, r);
   if (o.quadrature == "adaptive")
     std::cout << fmt::format(
         "\ncomputed in {:.3f} s (adaptive quadrature, tolerance {:g}: the prediction, allowed b, "
@@ -438,13 +243,19 @@ void print_theory_text(const TheoryOptions& o, const TheoryResults& r,
     std::cout << fmt::format("\ncomputed in {:.3f} s (gauss quadrature)\n", r.seconds);
 }
 
-void run_theory(const TheoryOptions& o, const HydrodynamicsOptions& h) {
+void run_theory(const TheoryOptions& o, const theory::BoxInputs& box) {
   validate_theory_inputs(o);
-  const TheoryResults r = compute_theory(o);
+  const theory::ReportInputs in = report_inputs(o, box);
+  theory::TheoryReport r;
+  try {
+    r = theory::compute_report(in);  // refuses a density where τ0 overflows
+  } catch (const std::invalid_argument& e) {
+    throw_as_usage_error("theory", e.what());
+  }
   if (o.json)
-    print_theory_json(o, r, h);
+    std::cout << theory::report_json(in, r, k_version).dump(2) << '\n';
   else
-    print_theory_text(o, r, h);
+    print_theory_text(o, in, r);
 }
 
 }  // namespace

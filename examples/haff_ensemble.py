@@ -39,9 +39,9 @@ def main(runs=4, particles=400, restitution=0.9, density=0.05, t_end=40.0):
         fits.append(tau0_run)
     tau0 = float(np.mean(fits))
     tau0_error = float(np.std(fits, ddof=1) / np.sqrt(runs))
-    theory = molchaos.theory(dim=2, restitution=restitution, density=density)["tau0"]
-    fit = {"tau0": tau0, "tau0_error": tau0_error, "theory": theory["value"],
-           "theory_error": theory["error"], "runs": runs}
+    theory = molchaos.theory(dim=2, restitution=restitution, density=density)
+    fit = {"tau0": tau0, "tau0_error": tau0_error, "theory": theory["tau0"],
+           "theory_error": theory["tau0_error"], "runs": runs}
     print(f"tau0 fitted {fit['tau0']:.3f} ± {fit['tau0_error']:.3f} ({runs} runs of N = "
           f"{particles}); kinetic theory {fit['theory']:.4f} ± {fit['theory_error']:.1e}")
     return fit

@@ -7,11 +7,16 @@ from .readers import read_run_csv, read_snapshot_csv, read_table, read_trajector
 
 
 def theory(*args, **kwargs):
+    # `dimension` names `dim`, as in simulate().
+    if "dimension" in kwargs:
+        if "dim" in kwargs:
+            raise TypeError("theory() got 'dimension' and 'dim' for the same parameter; give one")
+        kwargs["dim"] = kwargs.pop("dimension")
     # An unknown keyword named, as simulate() names it (pybind11's message lists the signature).
     for key in kwargs:
         if key not in _theory_keywords:
             raise TypeError(f"theory() got an unexpected keyword argument '{key}'; allowed: "
-                            f"{', '.join(_theory_keywords)}")
+                            f"{', '.join(_theory_keywords)} (dimension for dim)")
     return _theory(*args, **kwargs)
 
 

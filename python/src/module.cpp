@@ -26,9 +26,9 @@
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/sim/run.hpp"
-#include "molchaos/theory/contact_value.hpp"
-#include "molchaos/theory/cooling.hpp"
-#include "molchaos/theory/dimension.hpp"
+#include "molchaos/theory/collision_moments.hpp"
+#include "molchaos/theory/theory_report.hpp"
+#include "molchaos/theory/theory_report_json.hpp"
 #include "molchaos/version.hpp"
 #include "sigint_watch.hpp"
 
@@ -36,13 +36,6 @@ namespace py = pybind11;
 
 namespace molchaos::python {
 namespace {
-
-py::dict estimate(const theory::Estimate& e) {
-  py::dict d;
-  d["value"] = e.value;
-  d["error"] = e.error;
-  return d;
-}
 
 std::string repr_text(py::handle value) { return py::repr(value).cast<std::string>(); }
 
@@ -140,18 +133,25 @@ void require_writable_file(const std::string& name, const std::string& path) {
   }
 }
 
-// The same combination the CLI prints (theory::predict_cooling), with every error estimate.
-py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
-                           py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg) {
+// The CLI's `molchaos theory --json` document for these inputs, key for key (one computation,
+// theory::compute_report, and one document, theory::report_json), as Python values.
+py::object theory_report(py::handle dim_arg, py::handle restitution_arg, py::handle density_arg,
+                         py::handle b_arg, py::handle quadrature_arg, py::handle tolerance_arg,
+                         py::handle particles_arg, py::handle growth_arg) {
   const std::string dims = "{2, 3}";
-  const int dim = keyword_as<int>("dim", dim_arg, dims);
-  const double restitution = keyword_as<double>("restitution", restitution_arg);
-  const double density = keyword_as<double>("density", density_arg);
-  const double b = keyword_as<double>("b", b_arg);
+  theory::ReportInputs in;
+  in.dimension = keyword_as<int>("dim", dim_arg, dims);
+  in.restitution = keyword_as<double>("restitution", restitution_arg);
+  in.density = keyword_as<double>("density", density_arg);
+  in.correlation_b = keyword_as<double>("b", b_arg);
   const std::string quadrature = keyword_as<std::string>("quadrature", quadrature_arg);
-  if (dim != 2 && dim != 3)
-    throw py::value_error("dim: value " + std::to_string(dim) + " is outside the allowed range " +
-                          dims);
+  const std::string particles_range = "[" + std::to_string(theory::k_min_box_particles) + ", " +
+                                      std::to_string(theory::k_max_box_particles) + "]";
+  in.box.particles = keyword_as<std::int64_t>("particles", particles_arg, particles_range);
+  in.box.growth = keyword_as<double>("growth", growth_arg);
+  if (in.dimension != 2 && in.dimension != 3)
+    throw py::value_error("dim: value " + std::to_string(in.dimension) +
+                          " is outside the allowed range " + dims);
   if (quadrature != "gauss" && quadrature != "adaptive")
     throw py::value_error("quadrature: must be one of {gauss, adaptive}, got " +
                           repr_text(quadrature_arg));
@@ -170,20 +170,16 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
                           " is outside the allowed range [" +
                           repr_text(py::float_(theory::k_min_relative_tolerance)) + ", " +
                           repr_text(py::float_(theory::k_max_relative_tolerance)) + "]");
-  // Restitution, density (close packing, and where τ0 overflows) and b (where f2 and μ2 stay
-  // positive): predict_cooling checks them and names them, the checks the CLI reports.
-  theory::CoolingInputs inputs;
-  inputs.dimension = dim;
-  inputs.density = density;
-  inputs.restitution = restitution;
-  inputs.correlation_b = b;
-  inputs.quadrature.method = quadrature == "adaptive" ? theory::QuadratureMethod::adaptive
-                                                      : theory::QuadratureMethod::gauss;
-  inputs.quadrature.relative_tolerance = tolerance;
-  theory::CoolingPrediction p;
+  in.quadrature.method = quadrature == "adaptive" ? theory::QuadratureMethod::adaptive
+                                                  : theory::QuadratureMethod::gauss;
+  in.quadrature.relative_tolerance = tolerance;
+  // Restitution, density (close packing, and where τ0 overflows), b (where f2 and μ2 stay
+  // positive), particles and growth: compute_report checks them and names them, the checks the
+  // CLI reports.
+  std::string document;
   try {
     py::gil_scoped_release release;
-    p = theory::predict_cooling(inputs);
+    document = theory::report_json(in, theory::compute_report(in), k_version).dump();
   } catch (const std::invalid_argument& e) {
     // The message starts with the field's name, which is the keyword's but for correlation_b.
     const std::string field = "correlation_b:";
@@ -191,25 +187,7 @@ py::dict theory_prediction(py::handle dim_arg, py::handle restitution_arg, py::h
     if (message.starts_with(field)) message.replace(0, field.size(), "b:");
     throw py::value_error(message);
   }
-  py::dict d;
-  d["dim"] = dim;
-  d["restitution"] = restitution;
-  d["density"] = density;
-  d["b"] = b;
-  d["quadrature"] = quadrature;
-  d["packing_fraction"] = p.packing_fraction;
-  d["g2"] = estimate({p.g2, 0.0});  // closed forms: exact
-  d["g2_extrapolated"] = theory::g2_extrapolated(dim, p.packing_fraction);
-  d["a2"] = estimate({p.a2, 0.0});
-  d["mu2"] = estimate(p.mu2);
-  d["mu2_ratio"] = estimate(p.mu2_ratio);
-  d["omega0"] = p.omega0;
-  d["tau0"] = estimate(p.tau0);
-  d["A"] = estimate(p.A);
-  d["A_uncorrelated"] = estimate(p.A_uncorrelated);
-  d["enskog_collision_frequency"] = p.enskog_collision_frequency;
-  d["version"] = std::string(k_version);
-  return d;
+  return py::module_::import("json").attr("loads")(document);
 }
 
 template <class T>
@@ -531,28 +509,38 @@ PYBIND11_MODULE(_molchaos, m) {
   m.attr("__version__") = std::string(molchaos::k_version);
   // theory()'s keywords: its signature below, and the check of unknown keywords in the package
   // (__init__.py), whose message names the keyword (pybind11's prints the whole signature).
-  static constexpr std::array<const char*, 6> keywords{"dim", "restitution", "density",
-                                                       "b",   "quadrature",  "tolerance"};
+  static constexpr std::array<const char*, 8> keywords{
+      "dim", "restitution", "density", "b", "quadrature", "tolerance", "particles", "growth"};
   m.attr("_theory_keywords") = py::cast(std::vector<std::string>(keywords.begin(), keywords.end()));
+  const molchaos::theory::ReportInputs defaults;
   m.def(
-      "_theory", &theory_prediction, py::kw_only(), py::arg(keywords[0]) = py::int_(2),
-      py::arg(keywords[1]) = py::float_(0.9), py::arg(keywords[2]) = py::float_(0.05),
-      py::arg(keywords[3]) = py::float_(0.0), py::arg(keywords[4]) = py::str("gauss"),
-      py::arg(keywords[5]) = py::none(),
-      "Kinetic-theory prediction for one state point (the CLI's `molchaos theory`).\n\n"
-      "dim: 2 or 3; restitution: in (0, 1]; density: reduced density n, above 0 and below close\n"
-      "packing; b: the velocity correlation at contact of the paper's ansatz, in the range where\n"
-      "f2 and mu2 stay positive (the error names it); quadrature: 'gauss' (fixed rules, exact for\n"
-      "these integrands) or 'adaptive' (GSL's QAGIU, the independent check); tolerance: its\n"
-      "relative tolerance, in [1e-13, 1e-2], default 1e-10 (adaptive only).\n"
+      "_theory", &theory_report, py::kw_only(), py::arg(keywords[0]) = py::int_(defaults.dimension),
+      py::arg(keywords[1]) = py::float_(defaults.restitution),
+      py::arg(keywords[2]) = py::float_(defaults.density),
+      py::arg(keywords[3]) = py::float_(defaults.correlation_b),
+      py::arg(keywords[4]) = py::str("gauss"), py::arg(keywords[5]) = py::none(),
+      py::arg(keywords[6]) = py::int_(defaults.box.particles),
+      py::arg(keywords[7]) = py::float_(defaults.box.growth),
+      "Kinetic-theory report for one state point: the document `molchaos theory --json` prints,\n"
+      "key for key, as Python values.\n\n"
+      "dim (or dimension): 2 or 3; restitution: in (0, 1]; density: reduced density n, above 0\n"
+      "and below close packing; b: the velocity correlation at contact of the paper's ansatz, in\n"
+      "the range where f2 and mu2 stay positive (the error names it); quadrature: 'gauss' (fixed\n"
+      "rules, exact for these integrands) or 'adaptive' (GSL's QAGIU, the independent check);\n"
+      "tolerance: its relative tolerance, in [1e-13, 1e-2], default 1e-10 (adaptive only);\n"
+      "particles: N of the box whose largest shear mode is followed, in [2, 1e8]; growth: the\n"
+      "level of that mode's S_perp whose time is given, in (1, 1e12].\n"
       "Keywords only; a value of the wrong type raises TypeError, one out of range ValueError,\n"
       "each naming the parameter.\n\n"
-      "Returns a dict: dim, restitution, density, b, quadrature (the inputs); packing_fraction,\n"
-      "omega0, enskog_collision_frequency (floats); g2, a2, mu2, mu2_ratio (mu2/mu2(0,0)),\n"
-      "tau0, A, A_uncorrelated (A at b = 0) as {'value': float, 'error': float} dicts, error\n"
-      "the quadrature's estimate (0 for the closed forms g2 and a2); g2_extrapolated (bool: the\n"
-      "packing lies beyond the equilibrium fluid, 0.700 for disks and 0.494 for spheres, where\n"
-      "g2 and every number built on it extrapolate the fluid's equation of state); version (str).");
+      "Returns a dict: version; inputs; packing_fraction, g2, g2_extrapolated, a2, mu2 and\n"
+      "mu2_error, mu2_ratio, omega0, tau0 and tau0_error (None where the gas does not cool), A "
+      "and\n"
+      "A_error, A_uncorrelated (A at b = 0), enskog_collision_frequency; b_range; coefficients\n"
+      "(mu2's expansion against the paper's printed values and the exact forms),\n"
+      "coefficients_traceless_dyad, prefactors; sonine (a2, a3 and A at four levels of Sonine\n"
+      "theory); contact_response; critical_box_size, critical_shear_wavenumber,\n"
+      "critical_heat_wavenumber, transport, largest_shear_mode (linear hydrodynamics); seconds.\n"
+      "Each error is the quadrature's estimate of the value beside it.");
   m.def("simulate", &simulate, simulate_doc().c_str());
   m.attr("_flag_parameters") = flag_parameters();
 }

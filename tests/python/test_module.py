@@ -15,23 +15,37 @@ import pytest
 import molchaos
 
 
-def test_theory_equals_cli_json(molchaos_bin):
-    out = subprocess.run(
-        [molchaos_bin, "theory", "--dim", "2", "--restitution", "0.9", "--density", "0.05",
-         "--json"],
-        check=True, capture_output=True, text=True).stdout
-    cli = json.loads(out)
+def theory_cli(molchaos_bin, *flags):
+    """`molchaos theory --json` with these flags, as a dict."""
+    out = subprocess.run([molchaos_bin, "theory", *flags, "--json"], check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+@pytest.mark.parametrize("kwargs, flags", [
+    ({}, []),
+    (dict(dim=3, restitution=0.5, density=0.3, b=0.1),
+     ["--dim", "3", "--restitution", "0.5", "--density", "0.3", "--b", "0.1"]),
+    (dict(dimension=2, restitution=1, b=-1.5, particles=100000, growth=1e6),
+     ["--restitution", "1", "--b", "-1.5", "--particles", "100000", "--growth", "1e6"]),
+    (dict(restitution=0.2, quadrature="adaptive", tolerance=1e-6),
+     ["--restitution", "0.2", "--quadrature", "adaptive", "--tolerance", "1e-6"]),
+])
+def test_theory_is_the_cli_json_document(molchaos_bin, kwargs, flags):
+    # One computation and one document on both sides: every key, every double, bit for bit (the
+    # Sonine levels, the contact response, the hydrodynamics included), but the run time.
+    cli = theory_cli(molchaos_bin, *flags)
+    py = molchaos.theory(**kwargs)
+    assert isinstance(py.pop("seconds"), float)
+    cli.pop("seconds")
+    assert py == cli
+
+
+def test_theory_A_is_tau0_times_one_minus_eps_squared():
     py = molchaos.theory(dim=2, restitution=0.9, density=0.05)
-    # Same library call on both sides: identical doubles, no tolerance needed.
-    assert py["A"]["value"] == cli["A"]
-    assert py["A"]["error"] == cli["A_error"]
-    assert py["tau0"]["value"] == cli["tau0"]
-    assert py["mu2"]["value"] == cli["mu2"]
-    assert py["g2"]["value"] == cli["g2"]
-    assert py["a2"]["value"] == cli["a2"]
     # A = tau0 (1 - eps^2) (paper, Sec. 2), within the propagated quadrature error.
-    assert abs(py["A"]["value"] - py["tau0"]["value"] * (1 - 0.9**2)) <= \
-        py["A"]["error"] + py["tau0"]["error"] * (1 - 0.9**2) + 1e-15 * py["A"]["value"]
+    assert abs(py["A"] - py["tau0"] * (1 - 0.9**2)) <= \
+        py["A_error"] + py["tau0_error"] * (1 - 0.9**2) + 1e-15 * py["A"]
 
 
 @pytest.mark.parametrize("dim, density, beyond", [(2, 0.05, False), (2, 1.15, True),
@@ -63,7 +77,7 @@ def test_theory_refuses_the_density_the_cli_refuses(molchaos_bin, restitution):
     with pytest.raises(ValueError, match=rf"density: .*allowed range \({smallest}, 1\.1547005383792517\)"):
         molchaos.theory(restitution=restitution, density=1e-320)
     # Just above the smallest density, the prediction is finite.
-    A = molchaos.theory(restitution=restitution, density=2 * float(smallest))["A"]["value"]
+    A = molchaos.theory(restitution=restitution, density=2 * float(smallest))["A"]
     assert math.isfinite(A)
 
 
@@ -73,7 +87,7 @@ def test_theory_takes_the_b_the_cli_takes(molchaos_bin, b):
     out = subprocess.run(
         [molchaos_bin, "theory", "--restitution", "0.9", "--density", "0.05", "--b", str(b),
          "--json"], check=True, capture_output=True, text=True).stdout
-    assert molchaos.theory(restitution=0.9, density=0.05, b=b)["A"]["value"] == json.loads(out)["A"]
+    assert molchaos.theory(restitution=0.9, density=0.05, b=b)["A"] == json.loads(out)["A"]
 
 
 def test_theory_refuses_b_where_mu2_vanishes():
@@ -122,7 +136,7 @@ def test_simulate_is_reproducible_and_cools():
     assert np.all(np.diff(a["T"]) <= 0)  # inelastic: energy never grows between samples
     # And it cools like Haff's law: with tau0 from the theory, T(20) = 1/(1 + 20/tau0)^2. One run of
     # N = 200 disks fluctuates by about sqrt(2/(d N)) = 7 % in T; 5 such deviations bound it.
-    tau0 = molchaos.theory(dim=2, restitution=0.9, density=0.05)["tau0"]["value"]
+    tau0 = molchaos.theory(dim=2, restitution=0.9, density=0.05)["tau0"]
     haff = 1.0 / (1.0 + a["t"][-1] / tau0) ** 2
     assert abs(a["T"][-1] - haff) < 5 * np.sqrt(2 / (2 * 200)) * haff
     assert np.all(np.diff(a["collisions"].astype(np.int64)) >= 0)
@@ -181,7 +195,8 @@ def test_simulate_wrong_type_names_the_parameter_and_its_type(name, value, expec
 
 @pytest.mark.parametrize("name,value,expected", [
     ("restitution", True, "a real number"), ("density", None, "a real number"),
-    ("dim", 2.0, "an integer"), ("tolerance", "1e-8", "a real number")])
+    ("dim", 2.0, "an integer"), ("tolerance", "1e-8", "a real number"),
+    ("particles", 5000.0, "an integer"), ("growth", "10", "a real number")])
 def test_theory_wrong_type_names_the_parameter_and_its_type(name, value, expected):
     with pytest.raises(TypeError, match=rf"{name}: expected {expected}, got "):
         molchaos.theory(**{name: value})
@@ -196,7 +211,7 @@ def test_numbers_of_other_python_types_are_taken():
     np.testing.assert_array_equal(plain["T"], other["T"])
     assert molchaos.theory(restitution=1)["A"] == molchaos.theory(restitution=1.0)["A"]
     eps = np.float32(0.9)
-    assert molchaos.theory(restitution=eps)["restitution"] == float(eps)
+    assert molchaos.theory(restitution=eps)["inputs"]["restitution"] == float(eps)
     # An integer beyond the parameter's C++ type is a value out of range, not a wrong type; the
     # message names the allowed range (was: "does not fit the parameter's type").
     with pytest.raises(ValueError, match=rf"seed: value -1 is outside the allowed range "
@@ -213,6 +228,13 @@ def test_numbers_of_other_python_types_are_taken():
         molchaos.theory(dim=2**70)
     with pytest.raises(ValueError, match=r"dim: value 4 is outside the allowed range \{2, 3\}"):
         molchaos.theory(dim=4)
+    with pytest.raises(ValueError, match=r"particles: value 1 is outside the allowed range "
+                                         r"\[2, 100000000\]"):
+        molchaos.theory(particles=1)
+    with pytest.raises(ValueError, match=r"growth: value 1 is outside the allowed range \(1, "):
+        molchaos.theory(growth=1)
+    with pytest.raises(TypeError, match="'dimension' and 'dim' for the same parameter"):
+        molchaos.theory(dim=2, dimension=3)
 
 
 @pytest.mark.parametrize("b,shown", [(float("nan"), "nan"), (5.0, "5")])
@@ -419,7 +441,7 @@ def test_theory_names_an_unknown_keyword():
     with pytest.raises(TypeError, match=r"theory\(\) got an unexpected keyword argument "
                                         r"'restiution'; allowed: dim, restitution, density"):
         molchaos.theory(restiution=0.9)
-    assert molchaos.theory(restitution=0.8)["restitution"] == 0.8
+    assert molchaos.theory(restitution=0.8)["inputs"]["restitution"] == 0.8
 
 
 def test_simulate_names_an_unknown_keyword_and_what_a_flag_is_called_here():
