@@ -375,8 +375,15 @@ void add_simulate_command(CLI::App& app) {
     // A restart takes the run's parameters from its checkpoint's head, as --config would, unless
     // a --config file gives them: `simulate --restart run.ckpt --t-end 200`.
     if (const std::string& restart = options->checkpoints.restart;
-        config.empty() && is_checkpoint_file(restart))
-      apply_config_file(cmd, restart);
+        config.empty() && is_checkpoint_file(restart)) {
+      try {
+        apply_config_file(cmd, restart);
+      } catch (const UsageError& e) {  // the file came by --restart: named so
+        const std::string_view prefix = "--config: ", message = e.what();
+        if (!message.starts_with(prefix)) throw;
+        throw UsageError("--restart", std::string(message.substr(prefix.size())));
+      }
+    }
     if (relax->count() == 0) sim::default_relaxation_for_method(options->parameters);
     run_simulate(*options);
   });

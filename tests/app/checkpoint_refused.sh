@@ -2,7 +2,8 @@
 # Usage: checkpoint_refused.sh MOLCHAOS EXPECT_USAGE_ERROR
 # A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
 # differs: another format, version, dimension or parameter, a corrupt, truncated or extended file,
-# a head edited to other parameters, a t_end before the checkpoint's time; and
+# a head edited to other parameters or to a value that is no number, a t_end before the
+# checkpoint's time; and
 # --checkpoint-interval without --checkpoint.
 set -u
 bin=$(realpath "$1")
@@ -49,6 +50,12 @@ printf '\x5a' | dd of=flipped bs=1 seek=$((size - 20)) conv=notrunc 2>/dev/null
 refused "--restart.*checksum mismatch" "${args[@]}" --out b.csv --restart flipped
 refused "--restart.*not a molchaos checkpoint" "${args[@]}" --out b.csv --restart a.csv
 refused "--restart.*no checkpoint file 'missing'" "${args[@]}" --out b.csv --restart missing
+# A head that is no run's, read for the parameters of a restart given no others: named as the
+# --restart file it came by (was: as a --config file, which the command line does not hold).
+sed '0,/^density = 0.1$/s//density = abcd/' ck >unreadable_head
+cmp -s ck unreadable_head && fail "the head of ck has no line 'density = 0.1'"
+refused "^molchaos: error: --restart: unreadable_head: key 'density': .*'abcd' is not a number" \
+  simulate --restart unreadable_head --t-end 30 --out b.csv
 refused "--checkpoint-interval: needs --checkpoint FILE" \
   "${args[@]}" --out b.csv --checkpoint-interval 5
 [ ! -e b.csv ] && [ ! -e b.toml ] || fail "an output written by a refused restart: $(ls b.*)"
