@@ -5,6 +5,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -69,6 +70,19 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::ExtrasError&) {
+    // CLI11's message lists the words in reverse order; the command's remaining() has them in
+    // the order typed.
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    const CLI::App* command = parsed.empty() ? &app : parsed.front();
+    std::string words;
+    for (const std::string& word : command->remaining())
+      words += (words.empty() ? "'" : ", '") + word + "'";
+    std::fprintf(stderr, "molchaos: error: %s: unexpected argument%s %s (see molchaos %s--help)\n",
+                 command->get_name().empty() ? "molchaos" : command->get_name().c_str(),
+                 command->remaining().size() == 1 ? "" : "s", one_line(words).c_str(),
+                 command == &app ? "" : (command->get_name() + " ").c_str());
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
