@@ -78,6 +78,12 @@ def _read_header(path):
             from None
     if text:
         metadata["description"] = "\n".join(text)
+    # A real parameter whose value is whole ("t_end = 5") is a float, as simulate() and
+    # read_trajectory() give it.
+    from ._molchaos import _real_parameters
+    for key in _real_parameters:
+        if type(metadata.get(key)) is int:
+            metadata[key] = float(metadata[key])
     if "snapshot_times" in metadata and not isinstance(metadata["snapshot_times"], list):
         value = metadata["snapshot_times"]
         metadata["snapshot_times"] = [] if value == "" else [float(value)]

@@ -319,12 +319,15 @@ py::dict parameters_dict(const sim::Parameters& p) {
   return d;
 }
 
-// The names of the table's flags, True or False in parameters_dict: an H5MD file stores them as
-// the integers 0 and 1 (HDF5 has no boolean type), which read_trajectory reads back as bools.
-py::tuple flag_parameters() {
+// The names of the table's parameters of C++ type T: the flags (bool), True or False in
+// parameters_dict, which an H5MD file stores as the integers 0 and 1 (HDF5 has no boolean type)
+// and read_trajectory reads back as bools; the reals (double), floats in parameters_dict, which a
+// result file's header writes as "5" where the value is whole and the readers read back as floats.
+template <class T>
+py::tuple parameters_of_type() {
   py::list names;
   for (const sim::ParameterInfo& info : sim::parameter_table())
-    if (std::holds_alternative<bool sim::Parameters::*>(info.field))
+    if (std::holds_alternative<T sim::Parameters::*>(info.field))
       names.append(std::string(info.name));
   return py::tuple(names);
 }
@@ -542,5 +545,6 @@ PYBIND11_MODULE(_molchaos, m) {
       "critical_heat_wavenumber, transport, largest_shear_mode (linear hydrodynamics); seconds.\n"
       "Each error is the quadrature's estimate of the value beside it.");
   m.def("simulate", &simulate, simulate_doc().c_str());
-  m.attr("_flag_parameters") = flag_parameters();
+  m.attr("_flag_parameters") = parameters_of_type<bool>();
+  m.attr("_real_parameters") = parameters_of_type<double>();
 }

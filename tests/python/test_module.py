@@ -128,6 +128,22 @@ def test_simulate_equals_cli_run(molchaos_bin, tmp_path):
     assert meta["collisions"] == run["total_collisions"]
 
 
+def test_run_csv_header_gives_the_parameters_as_simulate_does(molchaos_bin, tmp_path):
+    # Was: a real parameter written whole ("t_end = 20", "restitution = 1") read back as int,
+    # where simulate() and read_trajectory() give a float.
+    run = molchaos.simulate(**dict(SMALL, restitution=1))
+    out = tmp_path / "run.csv"
+    flags = [("1" if previous == "--restitution" else word)
+             for previous, word in zip([""] + SMALL_FLAGS, SMALL_FLAGS)]
+    subprocess.run([molchaos_bin, "simulate", *flags, "--relax", "5", "--out", str(out)],
+                   check=True, capture_output=True)
+    _, meta = molchaos.read_run_csv(out)
+    for key, value in run["parameters"].items():
+        if key in meta:
+            assert meta[key] == value and type(meta[key]) is type(value), key
+    assert type(meta["t_end"]) is float and type(meta["restitution"]) is float
+
+
 def test_simulate_is_reproducible_and_cools():
     a = molchaos.simulate(**SMALL)
     b = molchaos.simulate(**SMALL)
