@@ -1,6 +1,7 @@
 // build/molchaos: the command-line front end. It parses, validates and dispatches; the physics
 // lives in the libraries (theory/, sim/, validation/, figures/).
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -30,6 +31,10 @@ std::string one_line(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A write beyond the file-size limit (ulimit -f) fails with EFBIG, which the writers report and
+  // clean up after, as after a full disk; by default the signal would kill the process and leave
+  // the temporaries of its outputs behind. (Python ignores it too.)
+  std::signal(SIGXFSZ, SIG_IGN);
 #ifdef MOLCHAOS_HAVE_MPI
   // Under mpirun/srun every rank runs main(). Rank 0 parses and runs the command; the others only
   // compute the runs rank 0 hands out, until the session on rank 0 goes out of scope (on every

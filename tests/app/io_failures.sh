@@ -3,8 +3,9 @@
 # The I/O layer loses nothing and says so: a corrupted cache entry is reported and recomputed,
 # unwritable or special outputs are refused (exit 2, naming the flag) before any work, snapshot
 # paths stay next to --out, a cache that cannot take a run stops the sweep naming the folder, and
-# a full disk (a small tmpfs, where mounting is allowed) gives exit 1 with no file or temporary
-# left behind, and a signal while a run's outputs are written waits until they are all in place.
+# a full disk (a small tmpfs, where mounting is allowed) or the file-size limit gives exit 1 with
+# no file or temporary left behind, and a signal while a run's outputs are written waits until
+# they are all in place.
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
@@ -195,6 +196,29 @@ for checkpoint in "" "--checkpoint sig.ckpt"; do
     fail "SIGTERM while writing ($checkpoint): status $status, $(cat sig.err)"
 done
 echo "ok: a signal while the outputs are written"
+
+# 2a. The file-size limit (ulimit -f, no mount needed): the writes fail as on a full disk (was:
+# SIGXFSZ killed the program, status 153, with the temporaries of its outputs left behind).
+mkdir limited
+echo "an earlier run" >limited/run.csv
+(ulimit -f 8 && exec "$bin" simulate --particles 2000 --t-end 1 --relax 1 --snapshot-times 1 --quiet \
+  --out limited/run.csv) > /dev/null 2> err.txt
+s=$?
+[ "$s" -eq 1 ] || fail "file-size limit gave status $s: $(cat err.txt)"
+grep -q "cannot write limited/run\.[a-z0-9.]*csv: .*File too large" err.txt || fail "file-size limit not named: $(cat err.txt)"
+[ "$(cat limited/run.csv)" = "an earlier run" ] || fail "the file-size limit replaced the earlier run.csv"
+[ "$(ls -A limited)" = run.csv ] || fail "left behind at the file-size limit: $(ls -A limited)"
+if "$bin" simulate --help | grep -q -- --trajectory; then
+  # Three frames of 6000 disks: each snapshot CSV (0.46 MB) below the limit, the trajectory
+  # (0.6 MB) above it.
+  (ulimit -f 500 && exec "$bin" simulate --particles 6000 --t-end 1 --relax 1 --snapshot-times 0,0.5,1 \
+    --quiet --out limited/h5run.csv --trajectory limited/run.h5) > /dev/null 2> err.txt
+  s=$?
+  [ "$s" -eq 1 ] || fail "file-size limit (H5MD) gave status $s: $(tail -n 2 err.txt)"
+  grep -q "cannot write limited/run.h5: .*File too large" err.txt || fail "file-size limit (H5MD) not named: $(tail -n 2 err.txt)"
+  [ "$(ls -A limited)" = run.csv ] || fail "left behind at the file-size limit (H5MD): $(ls -A limited)"
+fi
+echo "ok: file-size limit"
 
 # 2. Full disk: exit 1, nothing half-written, no temporary left, the earlier run's file in place.
 if mount_small_tmpfs small 64k; then
