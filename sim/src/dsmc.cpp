@@ -62,8 +62,8 @@ DsmcGas<D>::DsmcGas(const Parameters& p, double contact_value_g2)
   contacts_on_ = p.contact_statistics;
   collision_limit_ = p.max_collisions;
   const double n = static_cast<double>(n_);
-  // Λ = k (2B/s) N(N − 1)/2 with k = n g2 β_d / (N − 1).
-  rate_per_bound_ = p.density * contact_value_g2 * k_cross_section<D> * n / 2.0;
+  // Λ = k (2B/s) N(N − 1)/2 with k = g2 β_d / V = n g2 β_d / N.
+  rate_per_bound_ = p.density * contact_value_g2 * k_cross_section<D> * (n - 1.0) / 2.0;
   min_sum_u2_ = p.min_temperature * n * D;
   velocity_.resize(n_);
   Rng initial(p.seed);

@@ -23,13 +23,13 @@ grep -Eq '^  note: 6 runs \(seeds [0-9]+, [0-9]+, [0-9]+ and 3 more\): no collis
 "$bin" sweep --particles 100 --t-end-tau0 0.05 --seeds 1 --cache '' --threads 1 --quiet \
   >/dev/null 2>one.txt
 grep -Eq '^  note: seed [0-9]+: run ended before the transient' one.txt || fail "one run's note"
-# Few particles: the shift of A that fixed total momentum alone causes, 1/(2N), is named where
-# the runs resolve it (N = 2: 25 %), and not at N = 100, where 0.5 % lies within SE(A)/A.
+# Few particles: that A differs from A_theory (N → ∞) at order 1/N is named where the runs
+# resolve 1/N (N = 2: 50 %), and not at N = 100, where 1 % lies within SE(A)/A.
 "$bin" sweep --method dsmc --particles 2 --seeds 3 --cache '' --threads 1 --quiet >/dev/null 2>two.txt ||
   { cat two.txt; fail "sweep of two particles"; }
-grep -Eq '^  note: with N = 2 fixed total momentum alone lowers A by about 1/\(2N\) = 25 %, more than SE\(A\)/A = [0-9.]+ %' \
+grep -Eq '^  note: A_theory is that of N → ∞; a gas of N = 2 differs from it at order 1/N = 50 % .*more than SE\(A\)/A = [0-9.]+ %' \
   two.txt || fail "no note of the finite-N shift at N = 2: $(cat two.txt)"
 "$bin" sweep --method dsmc --particles 100 --seeds 3 --cache '' --threads 1 --quiet >/dev/null 2>hundred.txt ||
   fail "sweep of 100 particles"
-! grep -q 'fixed total momentum' hundred.txt || fail "a finite-N note the runs do not resolve: $(cat hundred.txt)"
+! grep -q 'at order 1/N' hundred.txt || fail "a finite-N note the runs do not resolve: $(cat hundred.txt)"
 echo "ok: one note per reason, naming how many runs and which seeds; the finite-N shift where resolved"
