@@ -17,6 +17,7 @@
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/csv.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/version.hpp"
 #include "repeated_options.hpp"
 #include "toml_reader.hpp"
 #ifdef MOLCHAOS_HAVE_IO
@@ -430,6 +431,13 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (!not_taken.empty())
     std::cerr << "note: --config " << path << ": " << cmd->get_name()
               << " has no option for the run's " << not_taken << "; not used\n";
+  // Another version may compute the same parameters into other bytes (event order, estimators,
+  // defaults of options the file does not name): said, so that a difference is not a surprise.
+  for (const auto& [key, values] : items)
+    if (result_file && key == "version" && values.size() == 1 && values[0] != k_version)
+      std::cerr << "note: --config " << path << " was written by molchaos " << values[0]
+                << "; this is molchaos " << k_version
+                << ": the same parameters need not give the same numbers\n";
 }
 
 void write_config_toml(const sim::Parameters& p, std::ostream& out) {

@@ -2,8 +2,8 @@
 # Usage: config_files.sh MOLCHAOS EXPECT_USAGE_ERROR
 # Input files: a run repeated from its own CSV header (simulate --config run.csv), from a snapshot's
 # header (run.snapshot0.csv), from its H5MD and XYZ trajectories and from the TOML
-# that --write-config wrote gives the same bytes; flags override the file; every subcommand reads
-# one; unknown keys and out-of-range values are usage errors naming the key and the allowed range.
+# that --write-config wrote gives the same bytes (a file of another version with a note that the
+# numbers may differ); flags override the file; every subcommand reads one; unknown keys and out-of-range values are usage errors naming the key and the allowed range.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -12,8 +12,14 @@ enter_scratch_folder
 "$bin" simulate --dim 3 --particles 500 --density 0.2 --restitution 0.85 --randomize paper \
   --contacts --seed 11 --t-end 30 --snapshot-times 1 2.5 --tc 1e-4 --samples-per-decade 7 \
   --out run.csv --write-config run.toml --quiet 2>/dev/null || fail "first run"
-"$bin" simulate --config run.csv --out again.csv --quiet 2>/dev/null || fail "run from run.csv"
+"$bin" simulate --config run.csv --out again.csv --quiet 2>again.err || fail "run from run.csv"
 cmp run.csv again.csv || fail "the run repeated from its CSV header differs"
+! grep -q "^note:" again.err || fail "a note on a file of this very version: $(cat again.err)"
+# A file of another version is re-run with a note that the numbers may differ.
+sed 's/^# version = .*/# version = 0.0.1+other/' run.csv >other_version.csv
+"$bin" simulate --config other_version.csv --out other.csv --quiet 2>other.err || fail "run from another version's file"
+grep -q "^note: --config other_version.csv was written by molchaos 0.0.1+other; this is molchaos .*: the same parameters need not give the same numbers" other.err ||
+  fail "no note on another version's file: $(cat other.err)"
 cmp run.snapshot1.csv again.snapshot1.csv || fail "its snapshot differs"
 "$bin" simulate --config run.snapshot0.csv --out from_snapshot.csv --quiet 2>/dev/null ||
   fail "run from run.snapshot0.csv"  # a snapshot names its run too
