@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cli_support.hpp"
+#include "molchaos/theory/dimension.hpp"
 #include "molchaos/theory/hydrodynamics.hpp"
 
 namespace molchaos::app {
@@ -44,21 +45,26 @@ std::string hydrodynamics_text(const theory::ReportInputs& in, const theory::The
     s += fmt::format("  critical box L_c = 2π/k⊥  {:.6g} σ   (heat mode 2π/k∥: {:.6g} σ)\n",
                      theory::critical_box_size(c),
                      2.0 * std::numbers::pi / theory::critical_heat_wavenumber(c));
-  if (!(m.rate > 0)) {  // a box below L_c: the mode decays, the gas stays homogeneous
+  // A box below L_c: the mode decays, but the noise holds its S⊥ at a level above 1, which a
+  // growth level below it is reached on the way to.
+  if (!(m.rate > 0)) {
     s += fmt::format(
         "  N = {}: box {:.6g} σ, below L_c: the largest shear mode's amplitude decays at {:.6g} "
-        "per collision per particle, and S⊥ never reaches {:g}\n",
-        h.particles, m.box, -m.rate, h.growth);
-    return s;
+        "per collision per particle, and the noise holds its S⊥ at {:.6g}\n",
+        h.particles, m.box, -m.rate, m.stationary_level);
+    if (!std::isfinite(m.collisions))
+      s += fmt::format("  its S⊥ never reaches {}\n", theory::exact_text(h.growth));
   }
+  if (m.rate > 0)
+    s += fmt::format(
+        "  N = {}: box {:.6g} σ, the largest shear mode's amplitude grows at {:.6g} per collision "
+        "per particle (its energy S⊥ at twice that, once the decaying modes have died out)\n",
+        h.particles, m.box, m.rate);
+  if (!std::isfinite(m.collisions)) return s;
   s += fmt::format(
-      "  N = {}: box {:.6g} σ, the largest shear mode's amplitude grows at {:.6g} per collision "
-      "per particle (its energy S⊥ at twice that, once the decaying modes have died out)\n",
-      h.particles, m.box, m.rate);
-  s += fmt::format(
-      "  its S⊥ reaches {:g} after {:.6g} collisions per particle, t = {} "
+      "  its S⊥ reaches {} after {:.6g} collisions per particle, t = {} "
       "(ln t = {:.4g}) on Haff's law\n",
-      h.growth, m.collisions,
+      theory::exact_text(h.growth), m.collisions,
       std::isfinite(m.time) ? fmt::format("{:.6g}", m.time) : "beyond the largest double",
       m.log_time);
   return s;

@@ -114,6 +114,8 @@ BOOST_AUTO_TEST_CASE(transverse_structure_factor_limits) {
   for (double k : {0.5 * ks, 2.0 * ks}) BOOST_TEST(transverse_structure_factor(c, k, 0) == 1.0);
   const double k = 2.0 * ks;  // stationary value 4/(4 − 1) = 4/3
   BOOST_TEST(std::abs(transverse_structure_factor(c, k, 1e4) - 4.0 / 3.0) <= 1e-12);
+  BOOST_TEST(std::abs(stationary_transverse_structure_factor(c, k) - 4.0 / 3.0) <= 1e-12);
+  BOOST_TEST(std::isinf(stationary_transverse_structure_factor(c, 0.5 * ks)));  // it grows
   BOOST_TEST(std::isinf(collisions_to_reach(c, k, 1.5)));
   const double tau = collisions_to_reach(c, 0.5 * ks, 10.0);
   BOOST_TEST(std::abs(transverse_structure_factor(c, 0.5 * ks, tau) / 10.0 - 1) <= 1e-12);

@@ -3,6 +3,7 @@
 // --quadrature adaptive, a heat mode unstable at every wavelength, ln t beyond the largest time,
 // --b refused with its real range, and the paper's 2D-only prefactors in d = 3.
 #define BOOST_TEST_MODULE theory_command
+#include <fmt/format.h>
 #include <sys/wait.h>
 
 #include <boost/test/unit_test.hpp>
@@ -141,6 +142,27 @@ BOOST_AUTO_TEST_CASE(log_time_beyond_the_largest_double) {
   const auto small = run_json("").at("largest_shear_mode");
   BOOST_TEST(std::abs(small.at("log_time").get<double>() -
                       std::log(small.at("time").get<double>())) <= 1e-12);
+}
+
+// A box just below L_c (N = 1280, L = 160 σ < 161.1 σ): the mode decays, but the noise holds its
+// S⊥ at 72.9, so it passes 10 on the way (was: "S⊥ never reaches 10" in the text, while the JSON
+// gave the time). The text names the level and the time the JSON gives; a level above the
+// stationary one is never reached.
+BOOST_AUTO_TEST_CASE(stable_box_reaches_a_level_below_its_stationary_one) {
+  const auto j = run_json("--particles 1280").at("largest_shear_mode");
+  BOOST_TEST(j.at("rate_per_collision").get<double>() < 0);
+  const double level = j.at("stationary_level").get<double>();
+  BOOST_TEST(level > 10.0);
+  const std::string text = run("--particles 1280").text;
+  BOOST_TEST(line_of(text, "below L_c").find(fmt::format("holds its S⊥ at {:.6g}", level)) !=
+             std::string::npos);
+  BOOST_TEST(
+      line_of(text, "its S⊥ reaches 10 after")
+          .find(fmt::format("{:.6g} collisions", j.at("collisions_per_particle").get<double>())) !=
+      std::string::npos);
+  const std::string beyond = fmt::format("--particles 1280 --growth {}", std::ceil(level));
+  BOOST_TEST(run_json(beyond).at("largest_shear_mode").at("time").is_null());
+  BOOST_TEST(run(beyond).text.find("its S⊥ never reaches") != std::string::npos);
 }
 
 // --b nan named (-inf, inf), a range that is not b's; the real one depends on --dim and

@@ -238,6 +238,14 @@ double transverse_structure_factor(const TransportCoefficients& c, double k, dou
   return (1.0 + a / lambda) * std::exp(2.0 * lambda * tau) - a / lambda;
 }
 
+double stationary_transverse_structure_factor(const TransportCoefficients& c, double k) {
+  const double ks = k * c.length_unit;
+  const double a = c.shear_viscosity * ks * ks * c.collision_ratio;
+  const double lambda = shear_mode_rate(c, k);
+  return lambda < 0 && std::abs(lambda) >= 1e-14 * a ? -a / lambda
+                                                     : std::numeric_limits<double>::infinity();
+}
+
 double collisions_to_reach(const TransportCoefficients& c, double k, double level) {
   if (!(level > 1.0))
     throw std::invalid_argument("level: value " + std::to_string(level) +

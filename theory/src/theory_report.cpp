@@ -34,6 +34,7 @@ LargestShearMode largest_shear_mode(const TransportCoefficients& c, const Report
   m.wavenumber = 2.0 * std::numbers::pi / m.box;
   m.rate = shear_mode_rate(c, m.wavenumber);
   m.collisions = collisions_to_reach(c, m.wavenumber, in.box.growth);
+  m.stationary_level = stationary_transverse_structure_factor(c, m.wavenumber);
   CoolingInputs cooling;
   cooling.dimension = d;
   cooling.density = in.density;

@@ -79,6 +79,11 @@ double critical_box_size(const TransportCoefficients& c);
 /// particle from an equilibrium start S⊥ = 1, by linear fluctuating hydrodynamics.
 double transverse_structure_factor(const TransportCoefficients& c, double wavenumber, double tau);
 
+/// The level S⊥(k, τ → ∞) = a/|λ| at which the noise holds a decaying transverse mode (λ < 0,
+/// a box below L_c): above 1 out of equilibrium, since the cooling gas's thermal noise decays
+/// more slowly than the mode; +inf where the mode grows.
+double stationary_transverse_structure_factor(const TransportCoefficients& c, double wavenumber);
+
 /// Collisions per particle until S⊥(k, τ) reaches `level` (> 1); +inf if it never does.
 double collisions_to_reach(const TransportCoefficients& c, double wavenumber, double level);
 

@@ -52,6 +52,7 @@ void require_box(const BoxInputs& box);
 struct LargestShearMode {
   double box = 0, wavenumber = 0, rate = 0, collisions = 0, time = 0;
   double log_time = 0;  ///< ln t, finite where t overflows a double
+  double stationary_level = 0;  ///< S⊥ at which a decaying mode settles; +inf where it grows
 };
 LargestShearMode largest_shear_mode(const TransportCoefficients& c, const ReportInputs& in);
 
