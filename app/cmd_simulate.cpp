@@ -239,7 +239,21 @@ void run_simulate(const SimulateOptions& options) {
                                       options.out +
                                       "), which this run would overwrite: choose "
                                       "another --out, or remove that file");
+      // A file of the user's own at a name the run derives (no result file of this suite: no
+      // parameter lines) would be replaced without a word.
+      std::error_code ec;
+      if (lines.empty() && std::filesystem::is_regular_file(path, ec) &&
+          std::filesystem::file_size(path, ec) > 0)
+        throw UsageError("--out", path + ", the name of this run's snapshot " + std::to_string(k) +
+                                      ", holds a file that is no result of molchaos, which this "
+                                      "run would overwrite: choose another --out, or remove "
+                                      "that file");
     }
+  }
+  try {
+    sim::require_replaceable_by_checkpoint(checkpoints.path);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--checkpoint", e.what());
   }
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
     throw UsageError(checkpoints.interval > 0 ? "--checkpoint-interval" : "--checkpoint-wall",
@@ -308,17 +322,6 @@ void run_simulate(const SimulateOptions& options) {
                              " (partial results in " + options.out + ")");
 }
 
-// Whether `path` is a regular file that opens as a checkpoint (anything else is the restart's to
-// refuse, with its own message).
-bool is_checkpoint_file(const std::string& path) {
-  std::error_code ec;
-  if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return false;
-  std::ifstream in(path, std::ios::binary);
-  std::string start(sim::k_checkpoint_magic.size(), '\0');
-  in.read(start.data(), static_cast<std::streamsize>(start.size()));
-  return in && start == sim::k_checkpoint_magic;
-}
-
 }  // namespace
 
 void add_simulate_command(CLI::App& app) {
@@ -375,7 +378,7 @@ void add_simulate_command(CLI::App& app) {
     // A restart takes the run's parameters from its checkpoint's head, as --config would, unless
     // a --config file gives them: `simulate --restart run.ckpt --t-end 200`.
     if (const std::string& restart = options->checkpoints.restart;
-        config.empty() && is_checkpoint_file(restart)) {
+        config.empty() && sim::is_checkpoint_file(restart)) {
       try {
         apply_config_file(cmd, restart);
       } catch (const UsageError& e) {  // the file came by --restart: named so

@@ -279,7 +279,14 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
     throw py::value_error("checkpoint_interval: needs checkpoint=FILE");
   if (checkpoints.path.empty() && checkpoints.wall_interval > 0)
     throw py::value_error("checkpoint_wall: needs checkpoint=FILE");
-  if (!checkpoints.path.empty()) require_writable_file("checkpoint", checkpoints.path);
+  if (!checkpoints.path.empty()) {
+    require_writable_file("checkpoint", checkpoints.path);
+    try {
+      sim::require_replaceable_by_checkpoint(checkpoints.path);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error(std::string("checkpoint: ") + e.what());
+    }
+  }
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {

@@ -10,6 +10,7 @@
 #include <map>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string_view>
 
 #include "molchaos/sim/atomic_file.hpp"
@@ -159,6 +160,25 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
     throw refuse("checksum mismatch (corrupt or edited file)");
   std::string payload = text.substr(at, static_cast<std::size_t>(size));
   return CheckpointReader(std::move(payload), path);
+}
+
+bool is_checkpoint_file(const std::string& path) {
+  std::error_code ec;
+  if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string start(k_checkpoint_magic.size(), '\0');
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  return in && start == k_checkpoint_magic;
+}
+
+void require_replaceable_by_checkpoint(const std::string& path) {
+  std::error_code ec;
+  if (!path.empty() && std::filesystem::is_regular_file(path, ec) &&
+      std::filesystem::file_size(path, ec) > 0 && !is_checkpoint_file(path))
+    throw std::invalid_argument(path +
+                                " holds a file that is no molchaos checkpoint, which the first "
+                                "checkpoint would replace: choose another name, or remove that "
+                                "file");
 }
 
 }  // namespace molchaos::sim

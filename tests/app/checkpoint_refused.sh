@@ -3,7 +3,7 @@
 # A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
 # differs: another format, version, dimension or parameter, a corrupt, truncated or extended file,
 # a head edited to other parameters or to a value that is no number, a t_end before the
-# checkpoint's time; and
+# checkpoint's time; a --checkpoint or snapshot name holding a file that the run would lose; and
 # --checkpoint-interval without --checkpoint.
 set -u
 bin=$(realpath "$1")
@@ -56,6 +56,18 @@ sed '0,/^density = 0.1$/s//density = abcd/' ck >unreadable_head
 cmp -s ck unreadable_head && fail "the head of ck has no line 'density = 0.1'"
 refused "^molchaos: error: --restart: unreadable_head: key 'density': .*'abcd' is not a number" \
   simulate --restart unreadable_head --t-end 30 --out b.csv
+# A file that is no checkpoint at the --checkpoint name (a result table) would be lost at the
+# first checkpoint (was: replaced without a word); so would a file of the user's own at a
+# snapshot's derived name.
+cp a.csv table.csv
+refused "--checkpoint: table.csv holds a file that is no molchaos checkpoint" \
+  "${args[@]}" --t-end 20 --out c.csv --checkpoint table.csv --checkpoint-interval 5
+cmp a.csv table.csv || fail "the table named by --checkpoint was changed"
+printf 'x,y\n1,2\n' >mine.snapshot0.csv
+refused "--out: mine.snapshot0.csv, the name of this run's snapshot 0, holds a file that is no result of molchaos" \
+  "${args[@]}" --t-end 5 --snapshot-times 1 --out mine.csv
+[ "$(cat mine.snapshot0.csv)" = "$(printf 'x,y\n1,2')" ] || fail "the user's file at a snapshot name was changed"
+[ ! -e c.csv ] && [ ! -e mine.csv ] || fail "a refused run wrote its CSV"
 refused "--checkpoint-interval: needs --checkpoint FILE" \
   "${args[@]}" --out b.csv --checkpoint-interval 5
 [ ! -e b.csv ] && [ ! -e b.toml ] || fail "an output written by a refused restart: $(ls b.*)"

@@ -260,6 +260,16 @@ def test_theory_b_out_of_range_is_named_by_its_keyword(b, shown):
         molchaos.theory(b=b)
 
 
+def test_checkpoint_refuses_a_file_that_is_no_checkpoint(tmp_path):
+    # Was: the first checkpoint replaced a result table given that name, without a word.
+    table = tmp_path / "table.csv"
+    table.write_text("x,y\n1,2\n")
+    with pytest.raises(ValueError, match="checkpoint: .*table.csv holds a file that is no "
+                                         "molchaos checkpoint"):
+        molchaos.simulate(**SMALL, checkpoint=table, checkpoint_interval=1.0)
+    assert table.read_text() == "x,y\n1,2\n"
+
+
 def test_checkpoint_takes_a_path_object(tmp_path):
     path = tmp_path / "run.ckpt"
     molchaos.simulate(**dict(SMALL, t_end=5.0), checkpoint=path, checkpoint_interval=1.0)

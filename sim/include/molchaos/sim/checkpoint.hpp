@@ -158,4 +158,12 @@ std::map<std::string, std::string> checkpoint_head(const std::string& text,
 /// the restart do.
 Parameters checkpoint_parameters(const std::string& path);
 
+/// Whether `path` is a regular file that opens as a checkpoint (its magic line).
+bool is_checkpoint_file(const std::string& path);
+
+/// Refuses (std::invalid_argument, naming the file) a checkpoint path that holds a file that is
+/// no checkpoint and not empty (a result table, notes), which the first checkpoint would replace.
+/// An earlier checkpoint may be replaced, as an output replaces the run's earlier output.
+void require_replaceable_by_checkpoint(const std::string& path);
+
 }  // namespace molchaos::sim
