@@ -340,8 +340,25 @@ RunResult run_dsmc_d(const Parameters& p, const ProgressCallback& progress) {
   result.parameters = p;
   result.version = k_version;
   result.stop_reason = StopReason::t_end;
+  // Progress (and the Python module's Ctrl-C watch, which runs in it) about every
+  // k_progress_collisions collisions, not only at the sample times, which a cooling run spaces
+  // ever wider: the gas goes on in steps whose length follows the collisions of the step before,
+  // at most doubling. Where it stops does not change the realisation (DsmcGas).
+  constexpr double k_progress_collisions = 1 << 20;
+  double step = k_progress_collisions / gas.candidate_rate();  // at most that many collisions
   for (double t : sample_times(p)) {
-    if (gas.advance_to(t) == DsmcGas<D>::Status::stopped) {
+    auto status = DsmcGas<D>::Status::reached;
+    for (;;) {
+      const double from = gas.time();
+      const double to = std::min(t, from + step);
+      const std::uint64_t before = gas.collisions();
+      status = gas.advance_to(to);
+      if (status == DsmcGas<D>::Status::stopped || to >= t) break;
+      const auto done = static_cast<double>(gas.collisions() - before);
+      step = (to - from) * std::min(2.0, k_progress_collisions / std::max(done, 1.0));
+      if (progress) progress(to / p.t_end);
+    }
+    if (status == DsmcGas<D>::Status::stopped) {
       result.stop_reason = *gas.stop_reason();
       result.samples.push_back(gas.sample());  // the state where the run stopped
       break;

@@ -13,8 +13,12 @@ import molchaos
 
 # A run of hours uninterrupted (elastic, dense, t_end = 1e6), relaxed in well under a second.
 LONG = "dict(particles=4000, density=0.3, restitution=1.0, t_end=1e6)"
-# DSMC: no relaxation, one progress report per sample time.
+# DSMC: no relaxation; progress about every 2^20 collisions.
 LONG_DSMC = "dict(method='dsmc', particles=100000, density=0.05, restitution=1.0, t_end=1e6)"
+# DSMC whose first sample time lies hours away (was: no stop before it, the progress came only
+# at sample times).
+FAR_SAMPLE_DSMC = ("dict(method='dsmc', particles=50000, restitution=1.0, t_end=1e5, "
+                   "samples_per_decade=1, t_first_sample=9e4)")
 
 
 def run_script(body, timeout=120):
@@ -37,7 +41,8 @@ except KeyboardInterrupt:
 """
 
 
-@pytest.mark.parametrize("kwargs", [LONG, LONG_DSMC], ids=["edmd", "dsmc"])
+@pytest.mark.parametrize("kwargs", [LONG, LONG_DSMC, FAR_SAMPLE_DSMC],
+                         ids=["edmd", "dsmc", "dsmc_far_sample"])
 def test_ctrl_c_stops_a_long_run_promptly(kwargs):
     # Was: the KeyboardInterrupt came only after the whole run.
     words = run_script(INTERRUPT.format(delay=0.5, kwargs=kwargs)).split()

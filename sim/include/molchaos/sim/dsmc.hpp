@@ -63,6 +63,8 @@ class DsmcGas {
 
   [[nodiscard]] double time() const { return time_; }
   [[nodiscard]] std::uint64_t collisions() const { return collisions_; }
+  /// Candidate pairs per unit of physical time now (Λ), an upper bound of the collision rate.
+  [[nodiscard]] double candidate_rate() const { return rate_; }
   [[nodiscard]] std::optional<StopReason> stop_reason() const { return stop_reason_; }
   [[nodiscard]] double temperature() const;
   /// Physical velocities, d per particle (for tests).
