@@ -71,5 +71,12 @@ refused "--out: mine.snapshot0.csv, the name of this run's snapshot 0, holds a f
 refused "--checkpoint-interval: needs --checkpoint FILE" \
   "${args[@]}" --out b.csv --checkpoint-interval 5
 [ ! -e b.csv ] && [ ! -e b.toml ] || fail "an output written by a refused restart: $(ls b.*)"
+# --checkpoint alone writes only on a signal: a run that finishes says it left no file (was:
+# nothing, and no file to go on from).
+"$bin" "${args[@]}" --t-end 5 --out d.csv --checkpoint only_on_signal.ckpt 2>note.txt ||
+  fail "run with --checkpoint alone"
+[ ! -e only_on_signal.ckpt ] || fail "a checkpoint written without interval or signal"
+grep -q "^note: no checkpoint written to only_on_signal.ckpt: without --checkpoint-interval or --checkpoint-wall one is written only on SIGINT or SIGTERM" note.txt ||
+  fail "no note that no checkpoint was written: $(cat note.txt)"
 [ "$failures" -eq 0 ] || fail "$failures refusals wrong"
 echo "ok: every unfit checkpoint refused with a message naming what differs"
