@@ -71,6 +71,13 @@ std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
     throw UsageError("--restart", e.what());
   } catch (const std::invalid_argument& e) {  // refused by the engine (too long a relaxation)
     throw_as_usage_error("simulate", e.what());
+  } catch (const std::exception& e) {
+    // The checkpoint a signal asked for could not be written (a full disk): the run is lost, and
+    // the message says which signal ended it, beside why nothing was saved.
+    if (!interrupt_signals::requested().load()) throw;
+    throw std::runtime_error("stopped by " + std::string(interrupt_signals::signal_name()) +
+                             ", but its checkpoint could not be written (" + e.what() +
+                             "): the run since the last checkpoint is lost");
   }
 }
 

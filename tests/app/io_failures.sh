@@ -142,6 +142,9 @@ rm stop.snapshot1.csv  # a gap in the replaced run's snapshots: the later one go
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 1 --quiet --out own.csv \
   --pair-correlations own.snapshot1.csv --write-config own.snapshot2.csv 2>/dev/null || fail "simulate own.csv again"
 [ -s own.snapshot1.csv ] && [ -s own.snapshot2.csv ] || fail "the run removed its own outputs named like snapshots: $(ls own*)"
+# (The pair-correlation table there goes first: --checkpoint refuses to replace a file that is no
+# checkpoint.)
+rm own.snapshot1.csv
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out own.csv --checkpoint own.snapshot1.csv \
   --checkpoint-interval 1 2>/dev/null || fail "simulate own.csv with a checkpoint"
 [ -s own.snapshot1.csv ] || fail "the run removed its own checkpoint named like a snapshot"
@@ -218,6 +221,16 @@ if "$bin" simulate --help | grep -q -- --trajectory; then
   grep -q "cannot write limited/run.h5: .*File too large" err.txt || fail "file-size limit (H5MD) not named: $(tail -n 2 err.txt)"
   [ "$(ls -A limited)" = run.csv ] || fail "left behind at the file-size limit (H5MD): $(ls -A limited)"
 fi
+# A signal whose checkpoint cannot be written: exit 1, the message names the signal and that the
+# run is lost (was: only the write error, as if no signal had come).
+(ulimit -f 100 && exec timeout --preserve-status -s TERM 1.5 "$bin" simulate --particles 20000 \
+  --restitution 1 --relax 2 --t-end 1e5 --checkpoint limited/big.ckpt --out limited/big.csv --quiet) \
+  > /dev/null 2> err.txt
+s=$?
+[ "$s" -eq 1 ] || fail "a signal whose checkpoint failed gave status $s: $(cat err.txt)"
+grep -q "stopped by SIGTERM, but its checkpoint could not be written (cannot write limited/big.ckpt: .*File too large)): the run since the last checkpoint is lost" err.txt ||
+  fail "the signal not named beside the failed checkpoint: $(cat err.txt)"
+[ "$(ls -A limited)" = run.csv ] || fail "left behind by the failed checkpoint: $(ls -A limited)"
 echo "ok: file-size limit"
 
 # 2. Full disk: exit 1, nothing half-written, no temporary left, the earlier run's file in place.
