@@ -13,6 +13,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "interrupt_signals.hpp"
 #include "molchaos/sim/parameters.hpp"
 #include "molchaos/validation/ensemble.hpp"
 #include "molchaos/validation/pair_correlations.hpp"
@@ -122,6 +123,15 @@ void run_sweep_command(SweepCliOptions& o) {
   // Only a sweep that will run creates folders: its cache, and the folder of its summary.
   if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
   if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
+  // A signal ends the sweep at once (interrupt_signals.hpp): every finished run is in the cache
+  // already, written whole, so the handler only says what is kept.
+  interrupt_signals::install(
+      o.cache.empty()
+          ? std::string("molchaos: sweep interrupted; no run is kept (--cache ''): the same "
+                        "command starts again from the first\n")
+          : fmt::format("molchaos: sweep interrupted; the cache {} keeps every finished run, and "
+                        "the same command continues from them\n",
+                        o.cache));
   validation::SweepOptions so;
   so.cache_directory = o.cache;
   so.threads = o.threads;

@@ -32,4 +32,15 @@ grep -Eq '^  note: A_theory is that of N → ∞; a gas of N = 2 differs from it
 "$bin" sweep --method dsmc --particles 100 --seeds 3 --cache '' --threads 1 --quiet >/dev/null 2>hundred.txt ||
   fail "sweep of 100 particles"
 ! grep -q 'at order 1/N' hundred.txt || fail "a finite-N note the runs do not resolve: $(cat hundred.txt)"
-echo "ok: one note per reason, naming how many runs and which seeds; the finite-N shift where resolved"
+# A signal during the runs: status 128 + signal, and a line saying what is kept (was: nothing).
+timeout --preserve-status -s INT 1 "$bin" sweep --particles 10000 --restitution 0.8,0.9 --seeds 6 \
+  --cache '' --threads 1 --quiet >/dev/null 2>int.txt
+s=$?
+[ "$s" -eq 130 ] || fail "SIGINT during a sweep gave status $s"
+grep -q "^molchaos: sweep interrupted; no run is kept (--cache '')" int.txt || fail "no word on SIGINT: $(cat int.txt)"
+timeout --preserve-status -s TERM 1 "$bin" sweep --particles 10000 --restitution 0.8,0.9 --seeds 6 \
+  --cache kept --threads 1 --quiet >/dev/null 2>term.txt
+s=$?
+[ "$s" -eq 143 ] || fail "SIGTERM during a sweep gave status $s"
+grep -q "^molchaos: sweep interrupted; the cache kept keeps every finished run" term.txt || fail "no word on SIGTERM: $(cat term.txt)"
+echo "ok: one note per reason, naming how many runs and which seeds; the finite-N shift where resolved; a signal said"
