@@ -318,15 +318,15 @@ void run_simulate(const SimulateOptions& options) {
                  interrupt_signals::signal_name());
     interrupt_signals::end_by_signal();
   }
-  // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
-  // for: the files say so in their rows (no frame in the H5MD file and no --xyz file, a
-  // --pair-correlations table without rows), and this line at once.
   // --checkpoint alone writes only on a signal: a run that finished leaves no file to go on from.
   if (!checkpoints.path.empty() && checkpoints.interval == 0 && checkpoints.wall_interval == 0)
     std::fprintf(stderr,
                  "note: no checkpoint written to %s: without --checkpoint-interval or "
                  "--checkpoint-wall one is written only on SIGINT or SIGTERM\n",
                  checkpoints.path.c_str());
+  // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
+  // for: the files say so in their rows (no frame in the H5MD file and no --xyz file, a
+  // --pair-correlations table without rows), and this line at once.
   if (result.snapshots.size() < p.snapshot_times.size())
     std::fprintf(stderr, "note: %zu of the %zu snapshot times reached before the run stopped\n",
                  result.snapshots.size(), p.snapshot_times.size());
