@@ -187,6 +187,45 @@ BOOST_AUTO_TEST_CASE(dense_heat_flux_coefficient_is_garzo_dufty_in_three_dimensi
     }
 }
 
+// The dense disk gas: μ* from the Chapman–Enskog projection onto S(V)V done for d = 2 alone
+// (the first-gradient Enskog operator with χ at the contact midpoint, f0 = f_M(1 + a2 S2)),
+// its terms collected in the disks' own variables. The ∇n source is a2/2 (kinetic) plus
+// (1+α)φχ(2 + φχ'/χ)[3α(α−1)/16 + a2(3α² − 3α + 14)/32] (collisional, C's collisional part
+// included), with φ = πn/4, Henderson's χ = (1 − 7φ/16)/(1 − φ)², χ' = (25/16 − 7φ/16)/(1 − φ)³;
+// μ_k* = 2[ζ*(1 + φχ'/χ)κ_k* + source]/(2ν_κ* − 3ζ*), μ* = μ_k*(1 + (3/4)φχ(1+α)), with
+// ζ* = ½χ(1−α²)(1 + 3a2/16), ν_κ* = ½(1+α)χ[½ + 15(1−α)/8 + (14 − 6α)a2/512],
+// κ_k* = ½[1 + 2a2 + (3/8)φχ(1+α)²(2α − 1 + a2(1+α))]/(ν_κ* − 2ζ*),
+// a2 = 16(1−α)(1−2α²)/(57 − 25α + 30α²(1−α)). At n = 0.5, α = 0.9: μ* = 0.4543832.
+BOOST_AUTO_TEST_CASE(dense_heat_flux_coefficient_of_disks_is_the_two_dimensional_projection) {
+  for (double n : {0.05, 0.2, 0.5, 0.7})
+    for (double alpha : {0.5, 0.8, 0.9, 0.99}) {
+      const auto c = at(2, n, alpha);
+      const double phi = std::numbers::pi / 4.0 * n;
+      const double chi = (1 - 7 * phi / 16) / std::pow(1 - phi, 2);
+      const double dl = phi * (25.0 / 16.0 - 7 * phi / 16) / std::pow(1 - phi, 3) / chi;
+      const double a2 = 16 * (1 - alpha) * (1 - 2 * alpha * alpha) /
+                        (57 - 25 * alpha + 30 * alpha * alpha * (1 - alpha));
+      const double zeta = 0.5 * chi * (1 - alpha * alpha) * (1 + 3 * a2 / 16);
+      const double nu =
+          0.5 * (1 + alpha) * chi * (0.5 + 15 * (1 - alpha) / 8 + (14 - 6 * alpha) * a2 / 512);
+      const double kappa_k =
+          0.5 *
+          (1 + 2 * a2 +
+           0.375 * phi * chi * (1 + alpha) * (1 + alpha) * (2 * alpha - 1 + a2 * (1 + alpha))) /
+          (nu - 2 * zeta);
+      const double source = a2 / 2 + (1 + alpha) * phi * chi * (2 + dl) *
+                                         (3 * alpha * (alpha - 1) / 16 +
+                                          a2 * (3 * alpha * alpha - 3 * alpha + 14) / 32);
+      const double mu_k = 2 * (zeta * (1 + dl) * kappa_k + source) / (2 * nu - 3 * zeta);
+      BOOST_TEST_INFO("n = " << n << ", alpha = " << alpha);
+      BOOST_TEST(c.a2 == a2, boost::test_tools::tolerance(1e-13));
+      BOOST_TEST(c.heat_flux_density == mu_k * (1 + 0.75 * phi * chi * (1 + alpha)),
+                 boost::test_tools::tolerance(1e-12));
+      if (n == 0.5 && alpha == 0.9)
+        BOOST_TEST(c.heat_flux_density == 0.4543832, boost::test_tools::tolerance(1e-7));
+    }
+}
+
 // At strong dissipation μ* outgrows κ* (Cκ* − p*μ* < 0 with ζ*(p*g − C/2) > 0): the determinant
 // of the longitudinal matrix never vanishes and its largest eigenvalue stays positive at every
 // k, so no k∥ exists (critical_heat_wavenumber gave 0, printed as 2π/k∥ = inf, read as never
