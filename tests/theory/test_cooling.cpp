@@ -193,6 +193,36 @@ BOOST_AUTO_TEST_CASE(errors_do_not_fall_below_the_rounding_of_their_value) {
   BOOST_TEST(!std::signbit(a2_first_sonine(3, 1.0)));
 }
 
+// A typed ε = 0.999999 is stored as the nearest double, 5e-17 away: 1 − ε² moves by 5e-11 of
+// itself, and μ2 and τ0 with it, a thousand times more than their quadrature errors (7e-20 on μ2
+// was stated). The errors cover μ2 and τ0 of the typed decimal, computed here from a long double
+// (11 more bits) of the same decimal; A, whose ε-dependence is through a2 alone, does not move.
+BOOST_AUTO_TEST_CASE(errors_cover_the_typed_restitution_not_only_the_stored_double) {
+  struct Typed {
+    double stored;
+    long double exact;
+  };
+  for (int d : {2, 3})
+    for (const Typed& e : {Typed{0.999999, 0.999999L}, Typed{0.999999999, 0.999999999L},
+                           Typed{0.9, 0.9L}, Typed{0.3, 0.3L}}) {
+      CoolingInputs in;
+      in.dimension = d;
+      in.restitution = e.stored;
+      const CoolingPrediction p = predict_cooling(in);
+      const long double scale =
+          ((1.0L - e.stored) * (1.0L + e.stored)) / ((1.0L - e.exact) * (1.0L + e.exact));
+      const double tau0 = static_cast<double>(p.tau0.value * scale);
+      const double mu2 = static_cast<double>(p.mu2.value / scale);
+      BOOST_TEST_INFO("d = " << d << ", eps = " << e.stored);
+      BOOST_TEST(std::abs(tau0 - p.tau0.value) <= p.tau0.error);
+      BOOST_TEST(std::abs(mu2 - p.mu2.value) <= p.mu2.error);
+      // The term is what the rounding of ε can do, not more: 2ε/(1 − ε²) times half an ulp (2⁻⁵⁴
+      // below 1), beside A's relative error of about 1e-14.
+      const double shift = 2 * e.stored / (1 - e.stored * e.stored) * std::ldexp(1.0, -54);
+      BOOST_TEST(p.tau0.error <= (1e-13 + 2 * shift) * p.tau0.value);
+    }
+}
+
 // At ε = 1 the nominal end of b, R0/(−R1) = 1/(3/2 ± 8e-14), lay above the exact 2/3: b =
 // 0.666666666666668 was taken and gave μ2/μ2(0,0) = 7.8e-16 ± 5.5e-14 and A = 2.7e16 ± 1.9e18.
 // A b where μ2 is not positive beyond its error gives no cooling time: refused, and just inside

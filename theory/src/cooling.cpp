@@ -42,9 +42,11 @@ double omega0_relative_rounding(int dimension, double density) {
   // (x = 7η/16 or η/2, off by 4u) by u + 4u·x/(1 − x); its denominator (1 − η)^d by
   // d(u + 3u·η/(1 − η)) + 2u (the square's product, or pow); the quotient by u. In all,
   // u[7 + 4x/(1 − x) + 3d·η/(1 − η)] with d ≤ 3 over the 2 + 3u of the rest: the bound below.
+  // The typed n's rounding to a double (u) moves n·g2 by u(1 − x/(1 − x) + d·η/(1 − η)) at
+  // most, x/(1 − x) < 1: another u[1 + d·η/(1 − η)].
   const double eta = packing_fraction(dimension, density);
   const double x = dimension == 2 ? 7.0 * eta / 16.0 : 0.5 * eta;
-  const double roundings = 14.0 + 4.0 * x / (1.0 - x) + 3.0 * dimension * eta / (1.0 - eta);
+  const double roundings = 15.0 + 4.0 * x / (1.0 - x) + 4.0 * dimension * eta / (1.0 - eta);
   return roundings * k_unit_roundoff;
 }
 
@@ -105,6 +107,11 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
   out.mu2_ratio = table.ratio_estimate(PairShape{out.a2, 0.0, in.correlation_b}, out.a2_error);
   const Estimate ratio_uncorrelated =
       table.ratio_estimate(PairShape{out.a2, 0.0, 0.0}, out.a2_error);
+  // μ2 and τ0 are ∝ (1 − ε²)^{±1}: the typed ε's rounding to a double (input_rounding) moves
+  // them by 2ε/(1 − ε²) times it, relative: 5e-11 at ε = 0.999999, far beyond the quadrature.
+  const double eps_relative_shift =
+      in.restitution < 1.0 ? 2.0 * in.restitution / one_minus_eps2 * input_rounding(in.restitution)
+                           : 0.0;
   if (in.restitution < 1.0) {
     const double base = table.base.value * base_scale;
     // Beyond the quadrature: base_scale (1 − ε, 1 + ε, their product, the division: 4u) and the
@@ -112,7 +119,7 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
     const double value = base * out.mu2_ratio.value;
     out.mu2 = {value, std::abs(base) * out.mu2_ratio.error +
                           table.base.error * base_scale * std::abs(out.mu2_ratio.value) +
-                          rounding_bound(value, 6.0)};
+                          rounding_bound(value, 6.0) + std::abs(value) * eps_relative_shift};
   } else {
     out.mu2 = {0.0, 0.0};  // elastic: no dissipation, exactly
   }
@@ -125,7 +132,8 @@ CoolingPrediction predict_cooling(const CoolingInputs& in) {
     // τ0 = A/((1 − ε)(1 + ε)): the factors, their product and the division add 4u (1 − ε is
     // exact for ε ≥ ½, counted anyway).
     const double tau0 = out.A.value / one_minus_eps2;
-    out.tau0 = {tau0, std::abs(tau0) * (out.A.relative_error() + 4.0 * k_unit_roundoff)};
+    out.tau0 = {tau0, std::abs(tau0) *
+                          (out.A.relative_error() + 4.0 * k_unit_roundoff + eps_relative_shift)};
   } else {
     out.tau0 = {std::numeric_limits<double>::infinity(), 0.0};
   }

@@ -54,8 +54,9 @@ double mu2_maxwell_prefactor(int dimension);
 /// ω0 of the header comment.
 double cooling_frequency_omega0(int dimension, double density, double initial_temperature);
 
-/// Bound on the relative rounding of ω0 as cooling_frequency_omega0 computes it (the operations
-/// are counted in cooling.cpp); it grows as η/(1 − η) towards close packing, where 1 − η cancels.
+/// Bound on the relative rounding of ω0 as cooling_frequency_omega0 computes it, the typed
+/// density's rounding to a double included (counted in cooling.cpp); it grows as η/(1 − η) towards
+/// close packing, where 1 − η cancels.
 double omega0_relative_rounding(int dimension, double density);
 
 /// A = 1/(ω0 · μ2/μ2(0,0)) with its error: the ratio's (relative error carried over), the

@@ -1,6 +1,7 @@
 // A number with its error estimate: what every numerical result of molchaos carries.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -26,6 +27,14 @@ inline constexpr double k_unit_roundoff = std::numeric_limits<double>::epsilon()
 /// of a computed (not exact) number: no error bar can be finer than the arithmetic that made it.
 inline double rounding_bound(double value, double roundings) {
   return roundings * k_unit_roundoff * std::abs(value);
+}
+
+/// Half the spacing of the doubles around x (the wider side): how far the decimal a user typed
+/// may lie from the double x it was stored as. A result's error covers the typed input only if it
+/// adds this, times the result's sensitivity to x.
+inline double input_rounding(double x) {
+  const double inf = std::numeric_limits<double>::infinity();
+  return 0.5 * std::max(std::nextafter(x, inf) - x, x - std::nextafter(x, -inf));
 }
 
 /// Quotient with first-order propagation of the relative errors.
