@@ -159,12 +159,16 @@ inline CLI::Validator unsigned_integer() {
 }
 
 /// A validator for a file or folder name given on the command line or in a --config file: not
-/// empty. Where the default is an empty name ("no such output"), an empty value typed by hand
-/// (an unset shell variable) would otherwise drop the output without a word.
+/// empty, and not "-". Where the default is an empty name ("no such output"), an empty value typed
+/// by hand (an unset shell variable) would otherwise drop the output without a word; "-", which
+/// other tools read as standard input or output, would name a file "-".
 inline CLI::Validator path_name() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
-        return text.empty() ? "empty name; give a path, or leave the option out" : "";
+        if (text.empty()) return "empty name; give a path, or leave the option out";
+        if (text == "-")
+          return "'-' (standard input or output) is not supported; give a file or folder name";
+        return "";
       },
       "PATH");
 }
