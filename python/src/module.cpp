@@ -414,6 +414,14 @@ py::dict simulate(const py::kwargs& kwargs) {
     PyErr_SetNone(PyExc_KeyboardInterrupt);  // a handler that raised nothing: still no result
     throw py::error_already_set();
   }
+  // checkpoint= alone writes only when the run is interrupted: a run that finished leaves no
+  // file to go on from, which the caller may have counted on.
+  if (!checkpoints.path.empty() && checkpoints.interval == 0 && checkpoints.wall_interval == 0) {
+    const std::string note = "no checkpoint written to " + checkpoints.path +
+                             ": without checkpoint_interval or checkpoint_wall one is written "
+                             "only when the run is interrupted";
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
+  }
   const sim::RunResult& r = *result;
   const auto& s = r.samples;
   py::dict d;

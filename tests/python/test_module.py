@@ -282,6 +282,15 @@ def test_simulate_unknown_keyword():
         molchaos.simulate(restitutoin=0.9)
 
 
+def test_a_checkpoint_without_an_interval_notes_that_none_was_written(tmp_path):
+    # Was: silence, where the CLI notes it; the caller finds no file to go on from.
+    path = tmp_path / "run.ckpt"
+    with pytest.warns(UserWarning, match=f"no checkpoint written to {re.escape(str(path))}: without "
+                                         "checkpoint_interval or checkpoint_wall"):
+        molchaos.simulate(**SMALL, checkpoint=path)
+    assert not path.exists()
+
+
 def test_simulate_refuses_an_unwritable_checkpoint_before_the_run():
     # Refused before the run, as by the CLI, not at the first checkpoint after part of the work.
     with pytest.raises(ValueError, match="checkpoint: cannot create a file next to /proc/run.ckpt"):
