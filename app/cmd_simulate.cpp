@@ -258,7 +258,7 @@ void run_simulate(const SimulateOptions& options) {
     }
   }
   try {
-    sim::require_replaceable_by_checkpoint(checkpoints.path);
+    sim::require_replaceable_by_checkpoint(checkpoints.path, checkpoints.restart);
   } catch (const std::invalid_argument& e) {
     throw UsageError("--checkpoint", e.what());
   }

@@ -282,7 +282,7 @@ sim::Parameters parameters_from(const py::kwargs& kwargs, sim::CheckpointOptions
   if (!checkpoints.path.empty()) {
     require_writable_file("checkpoint", checkpoints.path);
     try {
-      sim::require_replaceable_by_checkpoint(checkpoints.path);
+      sim::require_replaceable_by_checkpoint(checkpoints.path, checkpoints.restart);
     } catch (const std::invalid_argument& e) {
       throw py::value_error(std::string("checkpoint: ") + e.what());
     }

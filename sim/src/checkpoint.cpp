@@ -171,14 +171,23 @@ bool is_checkpoint_file(const std::string& path) {
   return in && start == k_checkpoint_magic;
 }
 
-void require_replaceable_by_checkpoint(const std::string& path) {
+void require_replaceable_by_checkpoint(const std::string& path, const std::string& restart) {
+  namespace fs = std::filesystem;
   std::error_code ec;
-  if (!path.empty() && std::filesystem::is_regular_file(path, ec) &&
-      std::filesystem::file_size(path, ec) > 0 && !is_checkpoint_file(path))
+  if (path.empty() || !fs::is_regular_file(path, ec) || fs::file_size(path, ec) == 0) return;
+  if (!is_checkpoint_file(path))
     throw std::invalid_argument(path +
                                 " holds a file that is no molchaos checkpoint, which the first "
                                 "checkpoint would replace: choose another name, or remove that "
                                 "file");
+  // A checkpoint is a run's only way on: replaced by a run that does not continue it (another
+  // run, or the same command started afresh), its progress would be lost without a word.
+  if (restart.empty() || !fs::equivalent(path, restart, ec))
+    throw std::invalid_argument(
+        path +
+        " holds the checkpoint of a run that this run does not continue, "
+        "which the first checkpoint would replace: restart from it to continue "
+        "that run, or choose another name, or remove that file");
 }
 
 }  // namespace molchaos::sim

@@ -3,7 +3,8 @@
 # A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
 # differs: another format, version, dimension or parameter, a corrupt, truncated or extended file,
 # a head edited to other parameters or to a value that is no number, a t_end before the
-# checkpoint's time; a --checkpoint or snapshot name holding a file that the run would lose; and
+# checkpoint's time; a --checkpoint or snapshot name holding a file that the run would lose (one
+# that is no checkpoint, or the checkpoint of a run it does not continue); and
 # --checkpoint-interval without --checkpoint.
 set -u
 bin=$(realpath "$1")
@@ -63,6 +64,18 @@ cp a.csv table.csv
 refused "--checkpoint: table.csv holds a file that is no molchaos checkpoint" \
   "${args[@]}" --t-end 20 --out c.csv --checkpoint table.csv --checkpoint-interval 5
 cmp a.csv table.csv || fail "the table named by --checkpoint was changed"
+# Another run's checkpoint at the --checkpoint name, or the same command started afresh, would
+# lose that run's progress (was: replaced without a word); the run restarted from it replaces it.
+cp ck kept.ckpt
+for restitution in 0.8 0.9; do
+  refused "--checkpoint: kept.ckpt holds the checkpoint of a run that this run does not continue" \
+    "${base[@]}" --restitution $restitution --t-end 20 --out c.csv --checkpoint kept.ckpt \
+    --checkpoint-interval 5
+done
+cmp ck kept.ckpt || fail "another run's checkpoint was changed"
+"$bin" "${args[@]}" --t-end 30 --out e.csv --restart kept.ckpt --checkpoint kept.ckpt \
+  --checkpoint-interval 5 2>/dev/null || fail "a restart replacing its own checkpoint was refused"
+cmp -s ck kept.ckpt && fail "the restarted run did not replace its checkpoint"
 printf 'x,y\n1,2\n' >mine.snapshot0.csv
 refused "--out: mine.snapshot0.csv, the name of this run's snapshot 0, holds a file that is no result of molchaos" \
   "${args[@]}" --t-end 5 --snapshot-times 1 --out mine.csv

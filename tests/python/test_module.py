@@ -270,6 +270,21 @@ def test_checkpoint_refuses_a_file_that_is_no_checkpoint(tmp_path):
     assert table.read_text() == "x,y\n1,2\n"
 
 
+def test_checkpoint_refuses_the_checkpoint_of_a_run_it_does_not_continue(tmp_path):
+    # Was: a new run (or the same call again) replaced another run's checkpoint without a word.
+    ckpt = tmp_path / "run.ckpt"
+    molchaos.simulate(**dict(SMALL, t_end=5.0), checkpoint=ckpt, checkpoint_interval=1.0)
+    saved = ckpt.read_bytes()
+    for restitution in (0.8, SMALL["restitution"]):
+        with pytest.raises(ValueError, match="checkpoint: .*run.ckpt holds the checkpoint of a "
+                                             "run that this run does not continue"):
+            molchaos.simulate(**dict(SMALL, t_end=5.0, restitution=restitution),
+                              checkpoint=ckpt, checkpoint_interval=1.0)
+    assert ckpt.read_bytes() == saved
+    molchaos.simulate(t_end=8.0, restart=ckpt, checkpoint=ckpt, checkpoint_interval=1.0)
+    assert ckpt.read_bytes() != saved
+
+
 def test_checkpoint_takes_a_path_object(tmp_path):
     path = tmp_path / "run.ckpt"
     molchaos.simulate(**dict(SMALL, t_end=5.0), checkpoint=path, checkpoint_interval=1.0)

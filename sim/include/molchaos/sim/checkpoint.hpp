@@ -161,9 +161,10 @@ Parameters checkpoint_parameters(const std::string& path);
 /// Whether `path` is a regular file that opens as a checkpoint (its magic line).
 bool is_checkpoint_file(const std::string& path);
 
-/// Refuses (std::invalid_argument, naming the file) a checkpoint path that holds a file that is
-/// no checkpoint and not empty (a result table, notes), which the first checkpoint would replace.
-/// An earlier checkpoint may be replaced, as an output replaces the run's earlier output.
-void require_replaceable_by_checkpoint(const std::string& path);
+/// Refuses (std::invalid_argument, naming the file) a checkpoint path that holds a file the first
+/// checkpoint would replace and lose: a file that is no checkpoint and not empty (a result table,
+/// notes), or the checkpoint of a run other than the one restarted from `restart` (empty: a new
+/// run). Only the checkpoint the run continues may be replaced by its own later ones.
+void require_replaceable_by_checkpoint(const std::string& path, const std::string& restart);
 
 }  // namespace molchaos::sim
