@@ -190,7 +190,7 @@ void write_outputs(const SimulateOptions& options, const sim::RunResult& result)
 void run_simulate(const SimulateOptions& options) {
   const sim::Parameters& p = options.parameters;
   // First, before the outputs' folders and names are looked at: DSMC keeps velocities only, so
-  // it has no configurations to write, and its runs take seconds.
+  // it has no configurations to write, and no checkpoints.
   if (p.method == sim::Method::dsmc) {
     for (const auto& [flag, path] :
          {std::pair{"--trajectory", &options.trajectory}, std::pair{"--xyz", &options.xyz},
@@ -203,7 +203,7 @@ void run_simulate(const SimulateOptions& options) {
                                      std::pair{"--restart", &options.checkpoints.restart}})
       if (!path->empty())
         throw UsageError(flag,
-                         "not allowed with --method dsmc (its runs take seconds); allowed "
+                         "not allowed with --method dsmc (it has no checkpoints); allowed "
                          "with --method edmd");
   }
   require_writable_file("--out", options.out, /*create_parent=*/false);

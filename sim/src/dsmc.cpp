@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -13,6 +14,8 @@
 #include "molchaos/sim/dsmc_contact.hpp"
 #include "molchaos/sim/momentum_drift.hpp"
 #include "molchaos/sim/parameter_table.hpp"
+#include "molchaos/sim/run.hpp"
+#include "molchaos/sim/run_length.hpp"
 #include "molchaos/version.hpp"
 
 namespace molchaos::sim {
@@ -332,10 +335,42 @@ template class DsmcGas<3>;
 
 namespace {
 
+// Refuses (std::invalid_argument naming t_end and its range) a run estimated to draw more than
+// k_max_run_events candidates, as the MD engine refuses one of too many events (run_length.hpp):
+// an elastic or nearly elastic gas collides at its initial rate for ever. The candidates per
+// collision are the majorant's at T = 1, which follows the temperature down.
+template <int D>
+void check_run_length(const Parameters& p, const DsmcGas<D>& gas) {
+  const double omega = enskog_collision_frequency(D, p.density, 1.0);
+  const RunLengthGas estimate{D, omega, p.restitution, 0.0,
+                              std::max(p.min_temperature, k_temperature_floor)};
+  const double n = static_cast<double>(p.particles);
+  const double per_collision = gas.candidate_rate() / (0.5 * n * omega);
+  const double limit = p.max_collisions > 0 ? static_cast<double>(p.max_collisions)
+                                            : std::numeric_limits<double>::infinity();
+  const auto candidates_to = [&](double t) {
+    return std::min(estimated_collisions_per_particle(estimate, t) * n / 2.0, limit) *
+           per_collision;
+  };
+  const double expected = candidates_to(p.t_end);
+  if (!(expected > k_max_run_events)) return;
+  char count[48] = "more candidates than a double holds";
+  if (std::isfinite(expected))
+    std::snprintf(count, sizeof count, "about %.2g candidates", expected);
+  char text[200];
+  std::snprintf(text, sizeof text, " would take %s (an estimated %.2g per collision)", count,
+                per_collision);
+  throw std::invalid_argument(
+      "t_end: " + message_number(p.t_end) + text + "; allowed range (0, " +
+      message_number(longest_time_within(candidates_to, p.t_end, k_max_run_events)) +
+      "] here: a shorter run, or a lower restitution");
+}
+
 template <int D>
 RunResult run_dsmc_d(const Parameters& p, const ProgressCallback& progress) {
   const auto start = std::chrono::steady_clock::now();
   DsmcGas<D> gas(p, contact_value_g2(p.dimension, p.density));
+  check_run_length(p, gas);
   RunResult result;
   result.parameters = p;
   result.version = k_version;

@@ -136,48 +136,31 @@ void Engine<D, Observer>::set_state(const std::vector<double>& positions,
 
 template <int D, class Observer>
 void Engine<D, Observer>::check_run_length(double t_end) const {
-  // Collisions per particle to time t, from T = 1: omega_E t at restitution 1; below it Haff's
-  // law T = (1 + t/tau0)^-2 with tau0 = 2d/((1 - eps^2) omega_E) (the first-order cooling rate,
-  // zeta = (1 - eps^2) omega_E sqrt(T) / d) gives omega_E tau0 ln(1 + t/tau0), up to the time
-  // at which T reaches the stop temperature (--min-temperature, or the floor of double
-  // precision). The TC model can hold the gas near where collisions come faster than tc (about
-  // omega(T) tc = 3, measured at eps = 0.5, tc = 20: T stays near 0.7): then omega(T) t, if
-  // larger. Capped by the collision limit. An estimate, in the homogeneous gas.
-  const double cooling = (1.0 - restitution_) * (1.0 + restitution_);
-  const double tau0 = 2.0 * D / (cooling * collision_frequency_);
-  const double stop_temperature = std::max(min_temperature_, k_temperature_floor);
-  const double tc = model_.tc.duration;
-  const double held_root_t = tc > 0 ? std::min(1.0, 3.0 / (collision_frequency_ * tc)) : 0.0;
+  // Collisions per particle to time t from T = 1 (run_length.hpp: Haff's law to the stop
+  // temperature, --min-temperature or the floor of double precision; the TC model's slower
+  // cooling), capped by the collision limit. An estimate, in the homogeneous gas.
+  const RunLengthGas gas{D, collision_frequency_, restitution_, model_.tc.duration,
+                         std::max(min_temperature_, k_temperature_floor)};
   const double limit = collision_limit_ > 0
                            ? 2.0 * static_cast<double>(collision_limit_) / n_
                            : std::numeric_limits<double>::infinity();
-  const auto collisions_to = [&](double t) {
-    if (!(cooling > 0)) return std::min(collision_frequency_ * t, limit);
-    const double t_stop = tau0 * (1.0 / std::sqrt(stop_temperature) - 1.0);
-    double per_particle = collision_frequency_ * tau0 * std::log1p(std::min(t, t_stop) / tau0);
-    if (held_root_t * held_root_t > stop_temperature)
-      per_particle = std::max(per_particle, collision_frequency_ * held_root_t * t);
-    return std::min(per_particle, limit);
-  };
   const auto events_to = [&](double t) {
-    return collisions_to(t) * n_ / 2.0 * events_per_collision_;
+    return std::min(estimated_collisions_per_particle(gas, t), limit) * n_ / 2.0 *
+           events_per_collision_;
   };
   const double expected_events = events_to(t_end);
   if (!(expected_events > k_max_relaxation_events)) return;
-  // The longest run allowed: events_to grows with t, so a bisection in log t finds it.
-  double lo = 0.0, hi = t_end;
-  for (int k = 0; k < 200 && hi > lo * (1.0 + 1e-12); ++k) {
-    const double mid = lo > 0 ? std::sqrt(lo * hi) : hi * 1e-300;
-    (events_to(mid) > k_max_relaxation_events ? hi : lo) = mid;
-  }
-  char text[200];
+  const double longest = longest_time_within(events_to, t_end, k_max_relaxation_events);
+  char count[40] = "more events than a double holds";  // a t_end near the largest double
+  if (std::isfinite(expected_events))
+    std::snprintf(count, sizeof count, "about %.2g events", expected_events);
+  char text[240];
   std::snprintf(text, sizeof text,
-                " would take about %.2g events at this density (an estimated %.2g per collision: "
-                "the collision, its stale predictions and the %s)",
-                expected_events, events_per_collision_,
-                neighbour_lists_ ? "shell exits" : "cell crossings");
+                " would take %s at this density (an estimated %.2g per collision: the collision, "
+                "its stale predictions and the %s)",
+                count, events_per_collision_, neighbour_lists_ ? "shell exits" : "cell crossings");
   throw std::invalid_argument("t_end: " + message_number(t_end) + text + "; allowed range (0, " +
-                              message_number(lo) + "] here: a shorter run or a denser gas");
+                              message_number(longest) + "] here: a shorter run or a denser gas");
 }
 
 template <int D, class Observer>
