@@ -354,12 +354,9 @@ void check_run_length(const Parameters& p, const DsmcGas<D>& gas) {
   };
   const double expected = candidates_to(p.t_end);
   if (!(expected > k_max_run_events)) return;
-  char count[48] = "more candidates than a double holds";
-  if (std::isfinite(expected))
-    std::snprintf(count, sizeof count, "about %.2g candidates", expected);
   char text[200];
-  std::snprintf(text, sizeof text, " would take %s (an estimated %.2g per collision)", count,
-                per_collision);
+  std::snprintf(text, sizeof text, " would take %s (an estimated %.2g per collision)",
+                estimated_count(expected, "candidates").c_str(), per_collision);
   throw std::invalid_argument(
       "t_end: " + message_number(p.t_end) + text + "; allowed range (0, " +
       message_number(longest_time_within(candidates_to, p.t_end, k_max_run_events)) +

@@ -37,9 +37,6 @@ constexpr double k_rebase_time = 1000.0;
 // Collapse: k_collapse_collisions (stop_reason.hpp) consecutive collisions, each within
 // k_micro_fraction mean free times of a previous collision of one of its particles.
 constexpr double k_micro_fraction = 1e-10;
-// The most events a relaxation may take (run_length.hpp): in gases far more dilute than any
-// studied here, where the cell crossings between collisions dominate, relax() refuses beyond it.
-constexpr double k_max_relaxation_events = k_max_run_events;
 // Dead-lock guard: k_stall_events (stop_reason.hpp) consecutive events at one and the same time
 // without any collision can only be a numerical dead-lock (a cell crossing or a rejected contact
 // re-predicted at now): the run stops with a reason instead of looping for ever.

@@ -149,16 +149,14 @@ void Engine<D, Observer>::check_run_length(double t_end) const {
            events_per_collision_;
   };
   const double expected_events = events_to(t_end);
-  if (!(expected_events > k_max_relaxation_events)) return;
-  const double longest = longest_time_within(events_to, t_end, k_max_relaxation_events);
-  char count[40] = "more events than a double holds";  // a t_end near the largest double
-  if (std::isfinite(expected_events))
-    std::snprintf(count, sizeof count, "about %.2g events", expected_events);
+  if (!(expected_events > k_max_run_events)) return;
+  const double longest = longest_time_within(events_to, t_end, k_max_run_events);
   char text[240];
   std::snprintf(text, sizeof text,
                 " would take %s at this density (an estimated %.2g per collision: the collision, "
                 "its stale predictions and the %s)",
-                count, events_per_collision_, neighbour_lists_ ? "shell exits" : "cell crossings");
+                estimated_count(expected_events, "events").c_str(), events_per_collision_,
+                neighbour_lists_ ? "shell exits" : "cell crossings");
   throw std::invalid_argument("t_end: " + message_number(t_end) + text + "; allowed range (0, " +
                               message_number(longest) + "] here: a shorter run or a denser gas");
 }
@@ -172,8 +170,8 @@ bool Engine<D, Observer>::relax(double collisions_per_particle, const std::funct
   // cells between collisions, its events grow as the crossings do (about 1/sqrt(n) per
   // collision), and 20 collisions per particle at n = 1e-20 would take days without a word.
   const double expected_events = static_cast<double>(target) * events_per_collision_;
-  if (expected_events > k_max_relaxation_events) {
-    const double most = k_max_relaxation_events / events_per_collision_ * 2.0 / n_;
+  if (expected_events > k_max_run_events) {
+    const double most = k_max_run_events / events_per_collision_ * 2.0 / n_;
     auto estimate = [](double x) {  // two digits: an estimate
       char text[32];
       std::snprintf(text, sizeof text, "%.2g", x);

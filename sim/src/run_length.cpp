@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace molchaos::sim {
@@ -53,6 +54,13 @@ double estimated_collisions_per_particle(const RunLengthGas& gas, double t) {
     log_t += h;
   }
   return c;
+}
+
+std::string estimated_count(double expected, const std::string& unit) {
+  if (!std::isfinite(expected)) return "more " + unit + " than a double holds";
+  char digits[32];
+  std::snprintf(digits, sizeof digits, "%.2g", expected);
+  return "about " + std::string(digits) + " " + unit;
 }
 
 double longest_time_within(const std::function<double(double)>& cost, double t_end, double budget) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <string>
 
 namespace molchaos::sim {
 
@@ -25,6 +26,10 @@ struct RunLengthGas {
 /// (to the stop temperature); with the TC model, Haff's cooling slowed by the fraction of
 /// collisions that stay inelastic (run_length.cpp). An estimate: within about 10 % where measured.
 double estimated_collisions_per_particle(const RunLengthGas& gas, double t);
+
+/// An estimated count as a refusal names it: "about 6.2e+11 events" (two digits), or "more events
+/// than a double holds" where the estimate overflowed (a t_end near the largest double).
+std::string estimated_count(double expected, const std::string& unit);
 
 /// The longest time in (0, t_end] whose cost(t) (increasing in t) stays within `budget`, by
 /// bisection in log t, to three digits rounded down; t_end itself when cost(t_end) is within.
