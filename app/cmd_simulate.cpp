@@ -319,7 +319,7 @@ void run_simulate(const SimulateOptions& options) {
     interrupt_signals::end_by_signal();
   }
   // --checkpoint alone writes only on a signal: a run that finished leaves no file to go on from.
-  if (!checkpoints.path.empty() && checkpoints.interval == 0 && checkpoints.wall_interval == 0)
+  if (checkpoints.only_on_interrupt())
     std::fprintf(stderr,
                  "note: no checkpoint written to %s: without --checkpoint-interval or "
                  "--checkpoint-wall one is written only on SIGINT or SIGTERM\n",

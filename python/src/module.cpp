@@ -416,7 +416,7 @@ py::dict simulate(const py::kwargs& kwargs) {
   }
   // checkpoint= alone writes only when the run is interrupted: a run that finished leaves no
   // file to go on from, which the caller may have counted on.
-  if (!checkpoints.path.empty() && checkpoints.interval == 0 && checkpoints.wall_interval == 0) {
+  if (checkpoints.only_on_interrupt()) {
     const std::string note = "no checkpoint written to " + checkpoints.path +
                              ": without checkpoint_interval or checkpoint_wall one is written "
                              "only when the run is interrupted";

@@ -46,6 +46,12 @@ struct CheckpointOptions {
   /// interrupt is obeyed. The relaxation neither pauses nor can be saved: a signal handler ends
   /// the process at once before then.
   std::atomic<bool>* under_way = nullptr;
+
+  /// A file named but no interval: checkpoints are written only on an interrupt, so a run that
+  /// finishes leaves none (which the CLI notes and Python warns of).
+  [[nodiscard]] bool only_on_interrupt() const {
+    return !path.empty() && interval == 0 && wall_interval == 0;
+  }
 };
 
 namespace detail {
