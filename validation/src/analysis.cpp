@@ -64,11 +64,17 @@ double error_of_runs(double error, int runs) {
 
 double collision_frequency_ratio(const sim::RunResult& run) {
   const auto& p = run.parameters;
-  const double t = run.samples.empty() ? 0.0 : run.samples.back().t;
-  const double T = run.samples.empty() ? 1.0 : run.samples.back().temperature;
-  const double omega =
-      2.0 * static_cast<double>(run.collisions) / (static_cast<double>(p.particles) * t);
-  return omega / theory::enskog_collision_frequency(p.dimension, p.density, T);
+  if (run.samples.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const sim::Sample& last = run.samples.back();
+  // From the last sample at or before half the run: a shuffled gas builds up its velocity
+  // correlations over its first tens of collision times (at n = 0.1 the paper's shuffle, averaged
+  // from t = 0 to 200, reads 0.1 % below its steady frequency, 4 standard errors of 12 seeds).
+  sim::Sample first;
+  for (const auto& s : run.samples)
+    if (s.t <= 0.5 * last.t) first = s;
+  const double omega = 2.0 * static_cast<double>(last.collisions - first.collisions) /
+                       (static_cast<double>(p.particles) * (last.t - first.t));
+  return omega / theory::enskog_collision_frequency(p.dimension, p.density, last.temperature);
 }
 
 LinearFit fit_line(const std::vector<double>& x, const std::vector<Measurement>& y) {

@@ -34,7 +34,8 @@ Measurement mean_and_standard_error(const std::vector<double>& values);
 /// scatter, so its error is unknown, not the 0 that mean_and_standard_error holds).
 double error_of_runs(double error, int runs);
 
-/// Collision frequency per particle of an elastic run, 2·collisions/(N t), over Enskog's.
+/// Collision frequency per particle of an elastic run, 2·collisions/(N t), over Enskog's, both
+/// counted from the last sample at or before half the run (the start-up transient left out).
 double collision_frequency_ratio(const sim::RunResult& run);
 
 /// Weighted least-squares line y = a + b x (weights 1/σ²; unweighted if any σ is 0), by Eigen.
