@@ -54,8 +54,23 @@ struct SimulateOptions {
 
 // The run, or nothing when a signal interrupted it (the checkpoint is then written).
 std::optional<sim::RunResult> run_checkpointed(const SimulateOptions& options,
-                                               const sim::ProgressReporter& progress) {
+                                               const sim::ProgressReporter& progress,
+                                               sim::CheckpointRecord& record) {
   sim::CheckpointOptions checkpoints = options.checkpoints;
+  checkpoints.record = &record;
+  // A periodic checkpoint that cannot be written (a full disk, a folder gone) costs only the
+  // safety net, not the run: its result does not depend on it. The run goes on, warned at once
+  // (on a line of its own below the progress display, if shown), and the file keeps the last
+  // checkpoint written, whole.
+  checkpoints.write_failed = [&path = options.checkpoints.path, shown = bool(progress)](
+                                 double time, const std::string& reason) {
+    std::fprintf(stderr,
+                 "%swarning: --checkpoint: the checkpoint at t = %s could not be written (%s); "
+                 "the run goes on, and %s keeps the last checkpoint written, if any (free space "
+                 "or fix the folder for the next one)\n",
+                 shown ? "\n" : "", sim::message_number(time).c_str(), reason.c_str(),
+                 path.c_str());
+  };
   // SIGTERM (a batch system's wall-time limit) and SIGINT: during the run, with a checkpoint
   // file, they ask for a checkpoint and an end (the run marks itself under way once the
   // relaxation, which has no checkpoint, is done); without one, and during the relaxation, they
@@ -300,7 +315,8 @@ void run_simulate(const SimulateOptions& options) {
                      static_cast<double>(report.collisions), rate / 1e6);
       std::fflush(stderr);
     };
-  const std::optional<sim::RunResult> run = run_checkpointed(options, progress);
+  sim::CheckpointRecord record;
+  const std::optional<sim::RunResult> run = run_checkpointed(options, progress, record);
   if (show_progress) std::fprintf(stderr, "\n");
   if (!run)
     throw Interrupted("simulate: stopped by signal " +
@@ -324,6 +340,21 @@ void run_simulate(const SimulateOptions& options) {
                  "note: no checkpoint written to %s: without --checkpoint-interval or "
                  "--checkpoint-wall one is written only on SIGINT or SIGTERM\n",
                  checkpoints.path.c_str());
+  // An interval the run never reached writes no checkpoint either (the wall clock none as well).
+  if (checkpoints.interval > 0 && record.due == 0) {
+    const std::string range =
+        record.longest_interval > 0
+            ? "one is taken with --checkpoint-interval in (0, " +
+                  sim::message_number(record.longest_interval) + "]"
+            : "the run reached no sample time before its end at which to take one";
+    const double end = result.samples.empty() ? record.start : result.samples.back().t;
+    std::fprintf(stderr,
+                 "note: no checkpoint written to %s: --checkpoint-interval %s is longer than the "
+                 "run (t = %s to %s), so no periodic checkpoint was due; %s\n",
+                 checkpoints.path.c_str(), sim::message_number(checkpoints.interval).c_str(),
+                 sim::message_number(record.start).c_str(), sim::message_number(end).c_str(),
+                 range.c_str());
+  }
   // A run that stopped early (a stop condition, a collapse) wrote fewer configurations than asked
   // for: the files say so in their rows (no frame in the H5MD file and no --xyz file, a
   // --pair-correlations table without rows), and this line at once.
@@ -378,8 +409,8 @@ void add_simulate_command(CLI::App& app) {
       ->transform(real_in(0, true, std::numeric_limits<double>::infinity(), false));
   cmd->add_option("--restart", checkpoints.restart,
                   "Continue the run saved in this checkpoint, its parameters taken from the file "
-                  "unless --config gives them (only t_end may change): the output is byte for "
-                  "byte the uninterrupted run's")
+                  "where no flag or --config gives them (only t_end may change): the output is "
+                  "byte for byte the uninterrupted run's")
       ->check(path_name());
   cmd->add_option("--write-config", options->write_config,
                   "Also write the run's parameters as a TOML file that --config reads back")
@@ -388,10 +419,11 @@ void add_simulate_command(CLI::App& app) {
       cmd->get_option(std::string(sim::find_parameter("relax_collisions_per_particle")->flag));
   set_callback_with_config(cmd, [cmd, options, relax](const std::string& config) {
     options->config = config;
-    // A restart takes the run's parameters from its checkpoint's head, as --config would, unless
-    // a --config file gives them: `simulate --restart run.ckpt --t-end 200`.
+    // A restart takes the run's parameters from its checkpoint's head, as --config would, where
+    // neither a flag nor a --config file gives them (both were read already, and win):
+    // `simulate --restart run.ckpt --t-end 200`, or a --config file that gives only t_end.
     if (const std::string& restart = options->checkpoints.restart;
-        config.empty() && sim::is_checkpoint_file(restart)) {
+        sim::is_checkpoint_file(restart)) {
       try {
         apply_config_file(cmd, restart);
       } catch (const UsageError& e) {  // the file came by --restart: named so

@@ -144,10 +144,18 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
       in.fail("engine's time " + message_number(engine.time()) +
               " lies before the time the run had reached, " + message_number(done));
     // A new t_end keeps the sample grid below both ends: the samples taken stay valid.
-    if (p.t_end != saved_t_end && !(engine.time() < p.t_end && done < p.t_end * (1 - 1e-12)))
-      throw CheckpointError("checkpoint " + checkpoints.restart +
-                            ": t_end = " + message_number(p.t_end) +
-                            " lies before the checkpoint's time " + message_number(engine.time()));
+    // A t_end equal to the checkpoint's time (or to the last sample time it reached, within the
+    // grid's rounding) leaves nothing to run: refused as well, saying so.
+    if (p.t_end != saved_t_end && !(engine.time() < p.t_end && done < p.t_end * (1 - 1e-12))) {
+      const std::string time = message_number(engine.time());
+      const bool equal = p.t_end >= engine.time();
+      throw CheckpointError(
+          "checkpoint " + checkpoints.restart + ": t_end = " + message_number(p.t_end) +
+          (equal ? " equals the checkpoint's time " + time + ", which leaves nothing to run"
+                 : " lies before the checkpoint's time " + time) +
+          "; allowed: t_end in (" + time + ", inf), or the checkpoint's own " +
+          message_number(saved_t_end));
+    }
   }
   if (checkpoints.under_way != nullptr) checkpoints.under_way->store(true);
 
@@ -159,7 +167,10 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
   std::sort(targets.begin(), targets.end());
   targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
 
-  double last_wall = elapsed(), next_checkpoint = std::max(done, 0.0) + checkpoints.interval;
+  const double t_start = std::max(done, 0.0);
+  double last_wall = elapsed(), next_checkpoint = t_start + checkpoints.interval;
+  CheckpointRecord record;
+  record.start = t_start;
   auto save = [&] {
     if (checkpoints.path.empty()) return;
     CheckpointWriter out;
@@ -167,6 +178,19 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
     engine.save_state(out);
     write_checkpoint_file(checkpoints.path, p, run_layout<RunEngine>(), out.data());
     last_wall = elapsed();
+  };
+  // A periodic checkpoint is a safety net: one that cannot be written (a full disk) leaves the
+  // run and its result as they are, and the file as the last write left it (whole: the write is
+  // atomic, its temporary removed). With write_failed the run goes on, warned; without, it ends.
+  auto save_periodic = [&] {
+    ++record.due;
+    try {
+      save();
+    } catch (const std::exception& e) {
+      if (!checkpoints.write_failed) throw;
+      checkpoints.write_failed(engine.time(), e.what());
+      last_wall = elapsed();  // the next try a whole wall interval later, not at every pause
+    }
   };
   auto wall_due = [&] {
     return checkpoints.wall_interval > 0 && elapsed() - last_wall >= checkpoints.wall_interval;
@@ -186,7 +210,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
         save();
         return std::nullopt;
       }
-      if (wall_due()) save();
+      if (wall_due()) save_periodic();
       status = engine.advance_to(t, k_progress_events);
     }
     auto take_sample = [&engine] {
@@ -222,11 +246,13 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
       save();
       return std::nullopt;
     }
+    record.longest_interval = t - t_start;
     if ((checkpoints.interval > 0 && t >= next_checkpoint) || wall_due()) {
-      save();
+      save_periodic();
       next_checkpoint = t + checkpoints.interval;
     }
   }
+  if (checkpoints.record != nullptr) *checkpoints.record = record;
   result.collisions = engine.collisions();
   result.events = engine.events();
   result.wall_seconds = elapsed();

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,15 @@ class CheckpointError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What a run did about its periodic checkpoints (those at an interval), filled in by run().
+struct CheckpointRecord {
+  std::size_t due = 0;  ///< periodic checkpoints due (at the intervals), written or not
+  double start = 0;     ///< the time the run started from (0, or a restart's checkpoint time)
+  /// The longest --checkpoint-interval at which this run would have taken one: the last sample
+  /// time before its end less `start` (0: it reached no such time).
+  double longest_interval = 0;
+};
+
 /// What run() does about checkpoints (all off by default).
 struct CheckpointOptions {
   std::string path;          ///< checkpoint file written (empty: none)
@@ -46,6 +56,14 @@ struct CheckpointOptions {
   /// interrupt is obeyed. The relaxation neither pauses nor can be saved: a signal handler ends
   /// the process at once before then.
   std::atomic<bool>* under_way = nullptr;
+  /// Called, with the run's time and the reason, when a periodic checkpoint (interval or wall
+  /// clock) cannot be written (a full disk); the run then goes on, as its result does not depend
+  /// on the checkpoint, and the file keeps the last checkpoint written, whole (the write is
+  /// atomic). Empty: the error ends the run. A checkpoint an interrupt asks for is the run's
+  /// only copy, and its failure always ends the run.
+  std::function<void(double time, const std::string& reason)> write_failed;
+  /// Filled in by the run, if set.
+  CheckpointRecord* record = nullptr;
 
   /// A file named but no interval: checkpoints are written only on an interrupt, so a run that
   /// finishes leaves none (which the CLI notes and Python warns of).
