@@ -442,6 +442,8 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
 
 void write_config_toml(const sim::Parameters& p, std::ostream& out) {
   out << k_parameters_title << " (read back with --config)\n";
+  // Read back, it is a result file's key (not an option): --config notes another version.
+  out << "version = \"" << k_version << "\"\n";
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     const std::string text = sim::format_value(p, info);
     out << info.name << " = ";

@@ -1,5 +1,7 @@
 // build/molchaos: the command-line front end. It parses, validates and dispatches; the physics
 // lives in the libraries (theory/, sim/, validation/, figures/).
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
@@ -20,12 +22,22 @@
 
 namespace {
 
-// CLI11 messages can span lines; a usage error must be exactly one line.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n') c = ' ';
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+// CLI11 messages can span lines; a usage error must be exactly one line. A value echoed from a
+// file can hold control bytes (a NUL would cut the message short, an escape sequence would drive
+// the terminal): they are written as \xNN.
+std::string one_line(const std::string& text) {
+  std::string line;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n' || c == '\t')
+      line += ' ';
+    else if (byte < 0x20 || byte == 0x7f)
+      line += fmt::format("\\x{:02x}", byte);
+    else
+      line += c;
+  }
+  while (!line.empty() && line.back() == ' ') line.pop_back();
+  return line;
 }
 
 }  // namespace

@@ -23,7 +23,8 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
   out << n << '\n'
       << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
       << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << sim::round_trip_text(s.t)
-      << " Collisions=" << s.collisions << " pbc=\"" << (dimension == 3 ? "T T T" : "T T F") << '"';
+      << " Collisions=" << s.collisions << " pbc=\"" << (dimension == 3 ? "T T T" : "T T F") << '"'
+      << " version=" << r.version;  // --config notes a file of another version
   // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted.
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     if (sim::omitted(r.parameters, info)) continue;

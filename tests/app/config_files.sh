@@ -27,6 +27,11 @@ cmp run.csv from_snapshot.csv && cmp run.snapshot1.csv from_snapshot.snapshot1.c
   fail "the run repeated from its snapshot's header differs"
 "$bin" simulate --config run.toml --out toml.csv --quiet 2>/dev/null || fail "run from run.toml"
 cmp run.csv toml.csv || fail "the run repeated from --write-config's TOML differs"
+sed 's/^version = .*/version = "0.0.1+other"/' run.toml >other_version.toml
+"$bin" simulate --config other_version.toml --out toml_other.csv --quiet 2>toml_other.err ||
+  fail "run from another version's TOML"
+grep -q "^note: --config other_version.toml was written by molchaos 0.0.1+other" toml_other.err ||
+  fail "no note on another version's TOML: $(cat toml_other.err)"
 sed 's/$/\r/' run.csv >crlf.csv  # the same file saved with Windows line ends
 "$bin" simulate --config crlf.csv --out crlf_again.csv --quiet 2>/dev/null || fail "run from crlf.csv"
 cmp run.csv crlf_again.csv || fail "the run repeated from its CSV with CRLF line ends differs"
@@ -84,6 +89,12 @@ if "$bin" simulate --help | grep -q -- --trajectory; then  # built with the HDF5
   cmp run.csv xyz_again.csv && cmp traj.xyz xyz_again.xyz ||
     fail "the run repeated from its XYZ file differs"
   echo "ok: a run repeated from its extended XYZ file, byte for byte"
+  # Its comment lines name the version that wrote it, as a CSV header does.
+  sed 's/ version=[^ ]*/ version=0.0.1+other/' traj.xyz >other_version.xyz
+  "$bin" simulate --config other_version.xyz --out xyz_other.csv --quiet 2>xyz_other.err ||
+    fail "run from another version's XYZ file"
+  grep -q "^note: --config other_version.xyz was written by molchaos 0.0.1+other" xyz_other.err ||
+    fail "no note on another version's XYZ file: $(cat xyz_other.err)"
 fi
 "$bin" simulate --config run.csv --seed 12 --t-end 20 --out other.csv --quiet 2>/dev/null ||
   fail "run with flags over the file"
@@ -261,5 +272,10 @@ cmp sweep.toml own_sweep.toml || fail "the sweep's --config file was changed by 
 cmp run.toml own.toml || fail "the --config file was changed by a refused command"
 refused "--out: 'cache/../cache/s.csv' lies in the --cache folder 'cache', whose files are the cached runs" \
   sweep --seeds 1 --cache cache --out cache/../cache/s.csv
+# A value echoed from a file shows its control bytes as \xNN: an escape sequence would drive the
+# terminal, a NUL end the message.
+printf '# molchaos run\n# version = x\n# randomize = pa\033[31mper\n# t_end = 1\nt,T\n' >escape.csv
+refused "--config: escape.csv: key 'randomize': --randomize: unknown value 'pa\\\\x1b\\[31mper'" \
+  simulate --config escape.csv
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"
