@@ -194,3 +194,50 @@ BOOST_AUTO_TEST_CASE(staged_sizing_leaves_honest_error_bars) {
     BOOST_TEST(o.true_above > 0.08);
   }
 }
+
+// Growing until the SE meets the target is optional stopping: the points that stop are those
+// whose runs scattered little, and their own SE is short. For normal runs the sizing reads only
+// their scatter, which is independent of their mean, so a point's mean has the variance σ²/n of
+// its final n: over 600 simulated gases, E[σ²/n] against the mean reported SE² (as a ratio of
+// standard deviations, pooled over the ten points) is about 1.04 from the points' own scatter and
+// within 2 % of 1 from reported_relative_scatter, whose model and χ² guard neither leave the bars
+// short nor inflate them at a gas whose scatter jumps with ε.
+BOOST_AUTO_TEST_CASE(reported_error_bars_cover_the_spread_of_staged_means) {
+  SeedSizing s;
+  const Rule model = [&](const std::vector<PointScatter>& gas) { return seeds_needed(gas, s); };
+  for (const auto& sigma : {smooth_scatter(), jumping_scatter()}) {
+    std::mt19937_64 rng(20261125);
+    const std::size_t m = sigma.size();
+    std::vector<double> true2(m), own2(m), reported2(m);
+    for (int r = 0; r < 600; ++r) {
+      const auto runs = staged_ensemble(sigma, model, rng);
+      std::vector<PointScatter> gas;
+      std::vector<double> means;
+      for (std::size_t k = 0; k < m; ++k) {
+        const auto& v = runs[k];
+        const int n = static_cast<int>(v.size());
+        double mean = 0.0, ss = 0.0;
+        for (const double x : v) mean += x / n;
+        for (const double x : v) ss += (x - mean) * (x - mean);
+        gas.push_back({k_restitutions[k], n, n, std::sqrt(ss / (n - 1)) / mean});
+        means.push_back(mean);
+      }
+      const auto reported = reported_relative_scatter(gas);
+      for (std::size_t k = 0; k < m; ++k) {
+        true2[k] += sigma[k] * sigma[k] / gas[k].runs;
+        own2[k] += std::pow(gas[k].relative_sd * means[k], 2) / gas[k].runs;
+        reported2[k] += std::pow(reported[k] * means[k], 2) / gas[k].runs;
+      }
+    }
+    double own_ratio2 = 0.0, reported_ratio2 = 0.0;
+    for (std::size_t k = 0; k < m; ++k) {
+      own_ratio2 += true2[k] / own2[k] / static_cast<double>(m);
+      reported_ratio2 += true2[k] / reported2[k] / static_cast<double>(m);
+    }
+    BOOST_TEST_MESSAGE("true SE / rms reported SE: own scatter " << std::sqrt(own_ratio2)
+                                                                 << ", reported_relative_scatter "
+                                                                 << std::sqrt(reported_ratio2));
+    BOOST_TEST(std::sqrt(own_ratio2) > 1.03);
+    BOOST_TEST(std::abs(std::sqrt(reported_ratio2) - 1.0) < 0.02);
+  }
+}

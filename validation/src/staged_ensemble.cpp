@@ -12,38 +12,63 @@
 namespace molchaos::validation {
 namespace {
 
-// The ensembles of the points of one list that need more seeds, one per point (a gas: one method
-// and mode at one density, whose points differ in restitution, is sized as a whole).
+// The points of one list by gas (one method and mode at one density, whose points differ in
+// restitution and are sized as a whole), each with its scatter as seed_sizing.hpp reads it.
+struct Gas {
+  std::vector<PointResult*> members;
+  std::vector<PointScatter> scatter;
+};
+std::vector<Gas> gases_of(const StagedList& list) {
+  std::map<std::tuple<double, int, std::string>, Gas> gases;
+  for (auto& p : *list.points) {
+    const auto& s = p.summary;
+    const bool usable = s.runs >= 2 && s.A.value > 0.0;
+    Gas& gas = gases[{s.density, static_cast<int>(p.method), s.mode}];
+    gas.members.push_back(&p);
+    gas.scatter.push_back({s.restitution, s.runs + s.failed, usable ? s.runs : 0,
+                           usable ? s.A.error * std::sqrt(s.runs) / s.A.value : 0.0});
+  }
+  std::vector<Gas> out;
+  for (auto& [key, gas] : gases) out.push_back(std::move(gas));
+  return out;
+}
+
+// The ensembles of the points of one list that need more seeds, one per point.
 std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list) {
   if (list.spec->target_relative_error <= 0.0) return {};
   SeedSizing sizing;
   sizing.target_relative_error = list.spec->target_relative_error;
   sizing.max_seeds = list.spec->max_seeds;
-  std::map<std::tuple<double, int, std::string>, std::vector<const PointResult*>> gases;
-  for (const auto& p : *list.points)
-    gases[{p.summary.density, static_cast<int>(p.method), p.summary.mode}].push_back(&p);
   std::vector<EnsembleSpec> specs;
-  for (const auto& [gas, members] : gases) {
-    std::vector<PointScatter> scatter;
-    for (const auto* p : members) {
-      const auto& s = p->summary;
-      const bool usable = s.runs >= 2 && s.A.value > 0.0;
-      scatter.push_back({s.restitution, s.runs + s.failed, usable ? s.runs : 0,
-                         usable ? s.A.error * std::sqrt(s.runs) / s.A.value : 0.0});
-    }
-    const std::vector<int> needed = seeds_needed(scatter, sizing);
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      if (needed[k] <= scatter[k].seeds) continue;
+  for (const auto& gas : gases_of(list)) {
+    const std::vector<int> needed = seeds_needed(gas.scatter, sizing);
+    for (std::size_t k = 0; k < gas.members.size(); ++k) {
+      if (needed[k] <= gas.scatter[k].seeds) continue;
+      const auto& member = *gas.members[k];
       EnsembleSpec spec = *list.spec;
-      spec.densities = {members[k]->summary.density};
-      spec.restitutions = {members[k]->summary.restitution};
-      spec.methods = {members[k]->method};
-      spec.modes = {*sim::parse_randomization(members[k]->summary.mode)};
+      spec.densities = {member.summary.density};
+      spec.restitutions = {member.summary.restitution};
+      spec.methods = {member.method};
+      spec.modes = {*sim::parse_randomization(member.summary.mode)};
       spec.seeds = needed[k];
       specs.push_back(spec);
     }
   }
   return specs;
+}
+
+// SE(A) of every point of a list grown to a target from reported_relative_scatter: the point's own
+// scatter decided when it stopped, and alone would leave its error bar short.
+void report_errors_of_grown_points(const StagedList& list) {
+  if (list.spec->target_relative_error <= 0.0) return;
+  for (const auto& gas : gases_of(list)) {
+    const std::vector<double> scatter = reported_relative_scatter(gas.scatter);
+    for (std::size_t k = 0; k < gas.members.size(); ++k) {
+      auto& s = gas.members[k]->summary;
+      if (gas.scatter[k].runs < 2) continue;
+      s.A.error = scatter[k] * s.A.value / std::sqrt(static_cast<double>(s.runs));
+    }
+  }
 }
 
 bool same_point(const PointResult& a, const PointResult& b) {
@@ -89,6 +114,7 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
           if (same_point(p, fresh)) p = std::move(fresh);
     }
   }
+  for (const auto& list : lists) report_errors_of_grown_points(list);
   return failures;
 }
 
