@@ -257,12 +257,16 @@ inline std::vector<std::string> comma_items(const std::string& text) {
 /// A list option: comma-separated values (and, as CLI11 lists take them, several arguments or
 /// repeats of the flag), each item checked by `item_check`. The one parser of every list of the
 /// CLI: an empty item ("0.1,,0.2", a lone ",") is refused as such, where a CLI11 delimiter drops
-/// it without a word, or, when nothing is left, takes the next flag as the value.
+/// it without a word, or, when nothing is left, takes the next flag as the value. With
+/// `empty_is_none`, a list that may be empty (snapshot times), one empty argument given alone
+/// (--snapshot-times "") is the empty list: it clears a --config file's values.
 template <class T>
 CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector<T>& target,
-                             const std::string& help, CLI::Validator item_check) {
+                             const std::string& help, CLI::Validator item_check,
+                             bool empty_is_none = false) {
   CLI::Validator items(
-      [item_check](std::string& text) -> std::string {
+      [item_check, empty_is_none](std::string& text) -> std::string {
+        if (empty_is_none && text.empty()) return {};
         const auto list = comma_items(text);
         std::string checked;  // the items as their check passes them on (integer_in)
         for (std::size_t k = 0; k < list.size(); ++k) {
@@ -284,13 +288,21 @@ CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector
           flag,
           [&target, flag](const std::vector<std::string>& arguments) {
             target.clear();
-            for (const auto& argument : arguments)
+            for (const auto& argument : arguments) {
+              if (argument.empty()) {  // passed by the check: empty_is_none
+                if (arguments.size() > 1)
+                  throw UsageError(flag,
+                                   "an empty value, which gives no values, among others; "
+                                   "give it alone (\"\") for none");
+                continue;
+              }
               for (const auto& item : comma_items(argument)) {
                 T value{};
                 if (!CLI::detail::lexical_cast(item, value))  // checked above
                   throw UsageError(flag, "cannot read '" + item + "'");
                 target.push_back(value);
               }
+            }
           },
           help)
       ->transform(items);

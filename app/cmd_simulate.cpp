@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -366,6 +367,45 @@ void run_simulate(const SimulateOptions& options) {
                              " (partial results in " + options.out + ")");
 }
 
+// The run's relaxation. Not given: its method's default. Given by a --config file that a run of
+// a method that does not relax wrote (a DSMC result's header, whose 0 that method forced) to a
+// run of a method that relaxes (`--config dsmc.csv --method edmd`): that 0 is no choice of the
+// user's, and would start EDMD from its lattice, unrelaxed, without a word; the method's default
+// is taken instead, with a note naming it and --relax 0, which keeps none. Kept as given: a flag
+// (--relax 0 included), a file whose method relaxes, a value other than 0 (typed into the file).
+void choose_relaxation(sim::Parameters& p, const CLI::Option& relax, const std::string& config) {
+  if (relax.count() == 0) {
+    sim::default_relaxation_for_method(p);
+    return;
+  }
+  if (config.empty() || config_file_that_set(relax.get_name()) != config ||
+      !sim::method_relaxes(p.method) || p.relax_collisions_per_particle != 0)
+    return;
+  const sim::ParameterInfo& method = *sim::find_parameter("method");
+  const std::vector<std::string> written = config_file_values(config, std::string(method.flag));
+  if (written.size() != 1) return;
+  sim::Parameters of_file;
+  try {
+    sim::parse_value(of_file, method, written[0]);
+  } catch (const std::invalid_argument&) {  // checked when the file was read
+    return;
+  }
+  if (sim::method_relaxes(of_file.method)) return;
+  p.relax_collisions_per_particle = sim::Parameters{}.relax_collisions_per_particle;
+  sim::default_relaxation_for_method(p);
+  const auto upper = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+  };
+  std::fprintf(stderr,
+               "note: --config %s: relax_collisions_per_particle = 0 was %s's (it does not "
+               "relax); this %s run relaxes %s collisions per particle, the default (--relax 0 "
+               "for none)\n",
+               config.c_str(), upper(sim::format_value(of_file, method)).c_str(),
+               upper(sim::format_value(p, method)).c_str(),
+               sim::format_value(p, *sim::find_parameter("relax_collisions_per_particle")).c_str());
+}
+
 }  // namespace
 
 void add_simulate_command(CLI::App& app) {
@@ -432,7 +472,7 @@ void add_simulate_command(CLI::App& app) {
         throw UsageError("--restart", std::string(message.substr(prefix.size())));
       }
     }
-    if (relax->count() == 0) sim::default_relaxation_for_method(options->parameters);
+    choose_relaxation(options->parameters, *relax, config);
     run_simulate(*options);
   });
 }

@@ -295,6 +295,19 @@ std::string config_file_that_set(const std::string& flag) {
 }
 
 namespace {
+// (file, option's long name) -> the values the file gave it, a flag overriding them or not.
+std::map<std::pair<std::string, std::string>, std::vector<std::string>>& values_in_files() {
+  static std::map<std::pair<std::string, std::string>, std::vector<std::string>> values;
+  return values;
+}
+}  // namespace
+
+std::vector<std::string> config_file_values(const std::string& path, const std::string& flag) {
+  const auto it = values_in_files().find({path, flag});
+  return it == values_in_files().end() ? std::vector<std::string>() : it->second;
+}
+
+namespace {
 // Refuses a run's header that lacks a parameter of the table (beyond those left out at their
 // default): the file was cut short, and the missing values would run as defaults.
 void check_run_header_complete(const ConfigItems& items, const std::string& path) {
@@ -386,6 +399,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
+    values_in_files()[{path, op->get_name()}] = values;
     if (values.empty()) {
       // An empty list leaves the option at its default: right for a list whose default is no
       // values (snapshot_times, which --write-config writes as [] and the CSV header as nothing

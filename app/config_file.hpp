@@ -58,6 +58,10 @@ void apply_config_file(CLI::App* cmd, const std::string& path);
 /// value, which the user may not have typed (a result file's relaxation, read for another method).
 std::string config_file_that_set(const std::string& flag);
 
+/// The values the --config file `path` gave the option `flag` (its long name, "--method"), read
+/// whether or not a flag on the command line overrode them; empty where the file names none.
+std::vector<std::string> config_file_values(const std::string& path, const std::string& flag);
+
 /// cmd's callback: reads --config FILE (added here) into the options not given as flags, then
 /// runs `action`, given the file's path (empty: none) where it takes one, so that a command
 /// can keep its outputs off the file it read.

@@ -76,8 +76,10 @@ inline void add_parameter_options(CLI::App* cmd, sim::Parameters& p) {
                 ->transform(parameter_check(info))
                 ->default_str(sim::format_value(p, info));
           } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-            // Values as several arguments (0 1 10) or comma separated (0,1,10), as a sweep's lists.
-            add_list_option(cmd, flag, target, help, parameter_check(info));
+            // Values as several arguments (0 1 10) or comma separated (0,1,10), as a sweep's lists;
+            // "" alone for none (the table's lists are empty by default), over a --config file's.
+            add_list_option(cmd, flag, target, help + "; \"\" for none (clears a --config file's)",
+                            parameter_check(info), /*empty_is_none=*/true);
           } else {
             cmd->add_option(flag, target, help)
                 ->transform(parameter_check(info))
