@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "molchaos/validation/pair_correlations.hpp"
+
 namespace molchaos::validation {
 namespace {
 
@@ -13,15 +15,6 @@ namespace {
 double log_sd_bias(int runs) {
   const double m = runs - 1;
   return -1.0 / (2.0 * m) - 1.0 / (6.0 * m * m);
-}
-
-// The p quantile of χ² with k degrees of freedom, z the standard normal quantile of p
-// (Wilson–Hilferty: at p = 0.05 within 2 % of the exact one from k = 5 on, and below it for
-// fewer, where few runs then reject the model less readily).
-double chi_square_quantile(double k, double z) {
-  const double c = 2.0 / (9.0 * k);
-  const double root = 1.0 - c + z * std::sqrt(c);
-  return root > 0.0 ? k * root * root * root : 0.0;
 }
 
 }  // namespace
@@ -86,15 +79,16 @@ std::vector<int> seeds_needed(const std::vector<PointScatter>& gas, const SeedSi
 
 std::vector<double> reported_relative_scatter(const std::vector<PointScatter>& gas) {
   const std::vector<double> model = modelled_relative_scatter(gas);
-  constexpr double z_5_percent = -1.6448536269514722;
   std::vector<double> out(gas.size());
   for (std::size_t k = 0; k < gas.size(); ++k) {
     const auto& p = gas[k];
     out[k] = p.relative_sd;
     if (p.runs < 2 || !(model[k] > p.relative_sd)) continue;
-    const double dof = p.runs - 1.0;
+    // (n − 1)s²/model² is χ² with n − 1 degrees of freedom where the model holds: its lower tail
+    // below 5 % rejects the model as too large.
+    const int dof = p.runs - 1;
     const double ratio = p.relative_sd / model[k];
-    if (dof * ratio * ratio >= chi_square_quantile(dof, z_5_percent)) out[k] = model[k];
+    if (1.0 - chi_square_p_value(dof * ratio * ratio, dof) >= 0.05) out[k] = model[k];
   }
   return out;
 }
