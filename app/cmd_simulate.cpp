@@ -391,8 +391,7 @@ void choose_relaxation(sim::Parameters& p, const CLI::Option& relax, const std::
     return;
   }
   if (sim::method_relaxes(of_file.method)) return;
-  p.relax_collisions_per_particle = sim::Parameters{}.relax_collisions_per_particle;
-  sim::default_relaxation_for_method(p);
+  p.relax_collisions_per_particle = sim::Parameters{}.relax_collisions_per_particle;  // the default
   const auto upper = [](std::string text) {
     for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return text;
