@@ -75,6 +75,43 @@ BOOST_AUTO_TEST_CASE(independent_velocities_have_no_pair_correlations) {
   }
 }
 
+// The error of g is the scatter of g itself: over many ideal-gas snapshots, the variance of each
+// bin's g over its error squared, summed over the bins as (K − 1) s²/σ², is χ² with Σ (K − 1)
+// degrees of freedom. Both tails are tested: √pairs, which ignores that a count is drawn from a
+// finite number of pairs, gives errors a third too large in the outermost bin here (its shell
+// holds 0.44 of the box) and fails the lower tail.
+BOOST_AUTO_TEST_CASE(error_of_g_matches_its_scatter_over_snapshots) {
+  const int d = 2, snapshots = 1000;
+  const double box = 40.0;
+  const std::vector<double> edges = pair_grid(0.5 * box, 2, 0.5, 6);
+  std::mt19937_64 rng(17);
+  const std::size_t bins = edges.size() - 1;
+  std::vector<double> sum(bins, 0.0), sum2(bins, 0.0), variance(bins, 0.0);
+  for (int k = 0; k < snapshots; ++k) {
+    const auto one = combine_pair_sums({pair_sums(ideal_gas(d, 400, box, 1.0, rng), d, edges)}, d);
+    for (std::size_t b = 0; b < bins; ++b) {
+      const auto& all = one[3 * b];  // sides in k_pair_sides order: all first
+      sum[b] += all.g.value;
+      sum2[b] += all.g.value * all.g.value;
+      variance[b] += all.g.error * all.g.error / snapshots;
+    }
+  }
+  double chi2 = 0.0;
+  int dof = 0;
+  for (std::size_t b = 0; b < bins; ++b) {
+    const double mean = sum[b] / snapshots;
+    const double s2 = (sum2[b] - snapshots * mean * mean) / (snapshots - 1);
+    BOOST_TEST_MESSAGE("bin [" << edges[b] << ", " << edges[b + 1]
+                               << "): scatter / error = " << std::sqrt(s2 / variance[b]));
+    chi2 += (snapshots - 1) * s2 / variance[b];
+    dof += snapshots - 1;
+  }
+  const double p = chi_square_p_value(chi2, dof);
+  BOOST_TEST_MESSAGE("chi2 = " << chi2 << ", dof = " << dof << ", p = " << p);
+  BOOST_TEST(p > 1e-3);
+  BOOST_TEST(p < 1.0 - 1e-3);
+}
+
 BOOST_AUTO_TEST_CASE(real_snapshot_with_shuffled_velocities_has_no_pair_correlations) {
   // Positions of an elastic hard-disk gas (g ≠ 1 near contact), velocities permuted at random.
   sim::Parameters p;

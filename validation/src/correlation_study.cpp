@@ -124,8 +124,8 @@ void add_pair_point(CorrelationStudy& S, const CorrelationStudyConfig& cfg, int 
       for (const auto& b : combine_pair_sums(sums, d))
         S.pair_correlations.push_back({d, n, e, m == 0 ? "none" : "flux", tau,
                                        static_cast<int>(sums.size()), to_string(b.side), b.r_lo,
-                                       b.r_hi, b.g, b.G_par, b.G_perp, b.G_par_snapshot_error,
-                                       b.G_perp_snapshot_error, b.pairs});
+                                       b.r_hi, b.g, b.G_par, b.G_perp, b.g_snapshot_error,
+                                       b.G_par_snapshot_error, b.G_perp_snapshot_error, b.pairs});
     }
 }
 
@@ -396,14 +396,15 @@ std::string pair_correlations_csv(const CorrelationStudy& S) {
   std::string out =
       table_header(S) +
       "dimension,density,restitution,randomize,tau,snapshots,side,r_lo,r_hi,g,g_err,G_par,"
-      "G_par_err,G_perp,G_perp_err,G_par_err_snapshots,G_perp_err_snapshots,pairs\n";
+      "G_par_err,G_perp,G_perp_err,g_err_snapshots,G_par_err_snapshots,G_perp_err_snapshots,"
+      "pairs\n";
   for (const auto& r : S.pair_correlations)
     out += fmt::format(
         "{},{},{},{},{:.4g},{},{},{:.6g},{:.6g},{:.6g},{:.3g},{:.5g},{:.3g},{:.5g},"
-        "{:.3g},{:.3g},{:.3g},{}\n",
+        "{:.3g},{:.3g},{:.3g},{:.3g},{}\n",
         r.dimension, r.density, r.restitution, r.mode, r.tau, r.snapshots, r.side, r.r_lo, r.r_hi,
         r.g.value, r.g.error, r.G_par.value, r.G_par.error, r.G_perp.value, r.G_perp.error,
-        r.G_par_snapshot_error, r.G_perp_snapshot_error, r.pairs);
+        r.g_snapshot_error, r.G_par_snapshot_error, r.G_perp_snapshot_error, r.pairs);
   return out;
 }
 

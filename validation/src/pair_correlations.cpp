@@ -148,6 +148,7 @@ SnapshotPairSums pair_sums(const sim::Snapshot& snap, int dimension,
     collect<3>(snap, scale2, edges, out.bins);
   const double volume = std::pow(snap.box, dimension);
   const double all_pairs = 0.5 * static_cast<double>(n) * static_cast<double>(n - 1);
+  out.all_pairs = all_pairs;
   for (std::size_t k = 0; k + 1 < edges.size(); ++k)
     out.uncorrelated_pairs.push_back(all_pairs * shell_volume(dimension, edges[k], edges[k + 1]) /
                                      volume);
@@ -193,9 +194,11 @@ std::vector<PairCorrelationBin> combine_pair_sums(const std::vector<SnapshotPair
     for (PairSide side : k_pair_sides) {
       const auto s = static_cast<std::size_t>(side);
       std::vector<double> pairs, par, perp, ideal;
-      double par2 = 0.0, perp2 = 0.0, ideal_sum = 0.0;
+      double par2 = 0.0, perp2 = 0.0, ideal_sum = 0.0, binomial_variance = 0.0;
       for (const auto& snap : snapshots) {
-        pairs.push_back(snap.bins[k].pairs[s]);
+        const double count = snap.bins[k].pairs[s];
+        pairs.push_back(count);
+        if (snap.all_pairs > 0.0) binomial_variance += count * (1.0 - count / snap.all_pairs);
         par.push_back(snap.bins[k].sum_par[s]);
         perp.push_back(snap.bins[k].sum_perp[s]);
         ideal.push_back(snap.uncorrelated_pairs[k]);
@@ -208,7 +211,8 @@ std::vector<PairCorrelationBin> combine_pair_sums(const std::vector<SnapshotPair
       b.r_hi = edges[k + 1];
       b.side = side;
       for (double p : pairs) b.pairs += p;
-      b.g = {b.pairs / ideal_sum, std::sqrt(b.pairs) / ideal_sum};
+      b.g = {b.pairs / ideal_sum, std::sqrt(binomial_variance) / ideal_sum};
+      b.g_snapshot_error = ratio_estimate(pairs, ideal).error;
       b.G_par = pair_mean(b.pairs, ratio_estimate(par, pairs).value * b.pairs, par2);
       b.G_perp = pair_mean(b.pairs, ratio_estimate(perp, pairs).value * b.pairs, perp2);
       b.G_par_snapshot_error = ratio_estimate(par, pairs).error;

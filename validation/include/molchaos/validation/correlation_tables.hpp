@@ -50,7 +50,8 @@ struct PairCorrelationRow {
   std::string side;  ///< "all", "approaching", "receding"
   double r_lo = 0.0, r_hi = 0.0;
   Measurement g, G_par, G_perp;  ///< errors as in pair_correlations.hpp (independent pairs)
-  double G_par_snapshot_error = 0.0, G_perp_snapshot_error = 0.0;  ///< from the snapshots' scatter
+  /// from the snapshots' scatter
+  double g_snapshot_error = 0.0, G_par_snapshot_error = 0.0, G_perp_snapshot_error = 0.0;
   double pairs = 0.0;
 };
 

@@ -28,6 +28,7 @@ struct SnapshotPairSums {
   std::vector<double> edges;
   std::vector<PairBinSums> bins;
   std::vector<double> uncorrelated_pairs;  ///< expected pairs per bin without correlations
+  double all_pairs = 0.0;                  ///< N(N − 1)/2, the pairs a bin's count is drawn from
 };
 
 /// Bin edges from σ = 1 to r_max: `near` equal bins of width `near_width` from contact, then
@@ -44,8 +45,14 @@ std::vector<double> default_pair_grid(double box);
 SnapshotPairSums pair_sums(const sim::Snapshot& snap, int dimension,
                            const std::vector<double>& edges);
 
-/// Ensemble estimate in one bin for one side. g = Σ pairs / Σ uncorrelated pairs with the Poisson
-/// error √pairs; G∥, G⊥ = Σ products / Σ pairs with the error of a mean of independent pair
+/// Ensemble estimate in one bin for one side. g = Σ pairs / Σ uncorrelated pairs with the binomial
+/// error of each snapshot's count among its N(N − 1)/2 pairs, √(pairs (1 − pairs/all_pairs)):
+/// exact for an ideal gas (the indicators of pairs in a shell of radius at most half the periodic
+/// box are pairwise independent, also those sharing a particle), where √pairs overstates it by
+/// 1/√(1 − p) for a shell holding a fraction p of the box (a third or more in the outer bins);
+/// the gas's own structure (a compressibility below the ideal gas's)
+/// makes the real scatter smaller still, which the error from the scatter of the snapshots beside
+/// it measures. G∥, G⊥ = Σ products / Σ pairs with the error of a mean of independent pair
 /// products. That error is exact under molecular chaos (products of different pairs are
 /// uncorrelated when velocities are independent with zero mean, even if they share a particle),
 /// so it is the one the test of G = 0 uses; with correlations it is a lower bound, and the error
@@ -55,7 +62,7 @@ struct PairCorrelationBin {
   double r_lo = 0.0, r_hi = 0.0;
   PairSide side = PairSide::all;
   Measurement g, G_par, G_perp;
-  double G_par_snapshot_error = 0.0, G_perp_snapshot_error = 0.0;
+  double g_snapshot_error = 0.0, G_par_snapshot_error = 0.0, G_perp_snapshot_error = 0.0;
   double pairs = 0.0;  ///< pairs counted over all snapshots
 };
 
