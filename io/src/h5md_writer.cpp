@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -32,9 +33,11 @@ void check_status(herr_t status, const char* what) {
   if (status < 0) throw std::runtime_error(std::string("HDF5: cannot write ") + what);
 }
 
-void string_attribute(hid_t where, const char* name, const std::string& value) {
+// `utf8`: the text may hold any UTF-8 (a person's name); HDF5 marks strings ASCII by default.
+void string_attribute(hid_t where, const char* name, const std::string& value, bool utf8 = false) {
   Handle type{H5Tcopy(H5T_C_S1), H5Tclose};
   H5Tset_size(type.id, value.size());
+  if (utf8) check_status(H5Tset_cset(type.id, H5T_CSET_UTF8), name);
   Handle space{H5Screate(H5S_SCALAR), H5Sclose};
   Handle attr{check(H5Acreate2(where, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), name),
               H5Aclose};
@@ -154,12 +157,20 @@ void parameters_group(hid_t file, const sim::RunResult& r) {
   string_attribute(g.id, "version", r.version);
 }
 
+// H5MD's author is the person who ran the simulation (the program is the creator): the name in
+// the environment variable MOLCHAOS_AUTHOR, else "unknown". Not the login name, which would make
+// the same run's file differ from one user or machine to the next.
+std::string author_name() {
+  const char* name = std::getenv("MOLCHAOS_AUTHOR");
+  return name != nullptr && *name != '\0' ? name : "unknown";
+}
+
 void write_contents(hid_t file, const sim::RunResult& r) {
   {
     Handle h5md = group(file, "h5md");
     numeric_attribute(h5md.id, "version", H5T_STD_I32LE, std::vector<std::int32_t>{1, 1}, false);
     Handle author = group(h5md.id, "author");
-    string_attribute(author.id, "name", "molchaos");
+    string_attribute(author.id, "name", author_name(), /*utf8=*/true);
     Handle creator = group(h5md.id, "creator");
     string_attribute(creator.id, "name", "molchaos");
     string_attribute(creator.id, "version", r.version);

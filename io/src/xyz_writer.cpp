@@ -22,7 +22,7 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
   const std::string z = dimension == 3 ? L : "1";
   out << n << '\n'
       << "Lattice=\"" << L << " 0 0 0 " << L << " 0 0 0 " << z << "\" "
-      << "Properties=species:S:1:pos:R:3:vel:R:3 Time=" << sim::round_trip_text(s.t)
+      << "Properties=species:S:1:pos:R:3:vel:R:3:momenta:R:3 Time=" << sim::round_trip_text(s.t)
       << " Collisions=" << s.collisions << " pbc=\"" << (dimension == 3 ? "T T T" : "T T F") << '"'
       << " version=" << r.version;  // --config notes a file of another version
   // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted.
@@ -37,6 +37,11 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
     out << 'X';
     for (std::size_t a = 0; a < 3; ++a)
       out << ' ' << (a < d ? sim::round_trip_text(s.positions[i * d + a]) : "0");
+    for (std::size_t a = 0; a < 3; ++a)
+      out << ' ' << (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
+    // ASE takes velocities from `momenta` alone (its Atoms.get_velocities() is momenta over
+    // masses, and species X has mass 1): with m = 1 they are the velocities again, so that a
+    // frame read by ase.io.read moves; `vel` stays for OVITO and earlier readers.
     for (std::size_t a = 0; a < 3; ++a)
       out << ' ' << (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
     out << '\n';

@@ -1,6 +1,7 @@
 """H5MD and extended XYZ files of `molchaos simulate`, read by h5py and ASE (readers written
 elsewhere), against the snapshot CSVs of the same run: the same doubles come back."""
 
+import os
 import subprocess
 import time
 
@@ -83,6 +84,9 @@ def test_extended_xyz_read_by_ase(run):
         np.testing.assert_array_equal(atoms.get_positions()[:, :dim], frame[cols].to_numpy())
         vel = atoms.arrays["vel"]
         np.testing.assert_array_equal(vel[:, :dim], frame[["vx", "vy", "vz"][:dim]].to_numpy())
+        # ASE's own velocities (from the momenta column, m = 1): not zero (was: no momenta).
+        np.testing.assert_array_equal(atoms.get_velocities()[:, :dim],
+                                      frame[["vx", "vy", "vz"][:dim]].to_numpy())
         if dim == 2:
             assert np.all(atoms.get_positions()[:, 2] == 0.0)
         assert atoms.cell[0, 0] == meta["box"] and atoms.cell[1, 1] == meta["box"]
@@ -106,6 +110,26 @@ def test_same_seed_same_h5md_bytes(molchaos_bin, tmp_path):
         files.append((tmp_path / name / "run.h5").read_bytes())
         time.sleep(1.1)  # timestamps have a resolution of one second
     assert files[0] == files[1]
+
+
+@pytest.mark.parametrize("author", [None, "", "Ada Lovelace", "Jürgen Höfling"])
+def test_h5md_author_is_the_person_not_the_program(molchaos_bin, tmp_path, author):
+    """H5MD's /h5md/author names who ran the simulation (the program is /h5md/creator): the name
+    in MOLCHAOS_AUTHOR, "unknown" where it is unset or empty (was: "molchaos" always)."""
+    env = {k: v for k, v in os.environ.items() if k != "MOLCHAOS_AUTHOR"}
+    if author is not None:
+        env["MOLCHAOS_AUTHOR"] = author
+    subprocess.run(
+        [molchaos_bin, "simulate", "--particles", "50", "--density", "0.05", "--t-end", "1",
+         "--relax", "1", "--quiet", "--snapshot-times", "1", "--out", str(tmp_path / "run.csv"),
+         "--trajectory", str(tmp_path / "run.h5")],
+        check=True, capture_output=True, env=env)
+    with h5py.File(tmp_path / "run.h5", "r") as f:
+        name = f["h5md/author"].attrs["name"]
+        # A name beyond ASCII is marked UTF-8, as HDF5 readers decode it.
+        cset = f["h5md/author"].attrs.get_id("name").get_type().get_cset()
+    assert (name.decode() if isinstance(name, bytes) else name) == (author or "unknown")
+    assert cset == h5py.h5t.CSET_UTF8
 
 
 def test_h5md_parameters_are_the_table(run):

@@ -1,5 +1,6 @@
-// The snapshots of a run as extended XYZ frames (box in Lattice, species/pos/vel properties), the
-// single-configuration format that OVITO and ASE open. Disks (d = 2) are written with z = 0.
+// The snapshots of a run as extended XYZ frames (box in Lattice, species/pos/vel/momenta
+// properties, momenta = vel at m = 1 for ASE), the single-configuration format that OVITO and ASE
+// open. Disks (d = 2) are written with z = 0.
 #pragma once
 
 #include <cstddef>
