@@ -59,6 +59,10 @@ inline std::size_t parse_real(const std::string& text, double& x) {
   return static_cast<std::size_t>(end - text.c_str());
 }
 
+/// The name of the number validators below, by which a --config file's reader knows an option
+/// that takes numbers (a TOML string "100" is no number for it).
+inline const std::string k_number_check = "number";
+
 /// The number validators below pass the value on as they read it (integers as plain decimal
 /// digits, -0 as 0), so they are attached with ->transform(): ->check() would check a copy.
 /// A validator for a real number in an interval; the message names the allowed range.
@@ -86,7 +90,7 @@ inline CLI::Validator real_in(double lo, bool lo_closed, double hi, bool hi_clos
         if (x == 0) text = "0";  // -0 is 0: one header line and one cache key for one run
         return {};
       },
-      "in " + range);
+      "in " + range, k_number_check);
 }
 
 /// A validator for an integer in the closed interval [lo, hi].
@@ -112,7 +116,7 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
         text = std::to_string(x);
         return {};
       },
-      "integer in " + range);
+      "integer in " + range, k_number_check);
 }
 
 /// The command-line flag of a field named in a validation message ("t_end: ..." -> "--t-end"):
@@ -155,7 +159,7 @@ inline CLI::Validator unsigned_integer() {
         }
         return {};
       },
-      "integer in " + range);
+      "integer in " + range, k_number_check);
 }
 
 /// A validator for a file or folder name given on the command line or in a --config file: not
@@ -282,7 +286,7 @@ CLI::Option* add_list_option(CLI::App* cmd, const std::string& flag, std::vector
         text = checked;
         return {};
       },
-      item_check.get_description());
+      item_check.get_description(), item_check.get_name());
   return cmd
       ->add_option_function<std::vector<std::string>>(
           flag,

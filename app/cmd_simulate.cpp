@@ -281,8 +281,21 @@ void run_simulate(const SimulateOptions& options) {
   if (checkpoints.path.empty() && (checkpoints.interval > 0 || checkpoints.wall_interval > 0))
     throw UsageError(checkpoints.interval > 0 ? "--checkpoint-interval" : "--checkpoint-wall",
                      "needs --checkpoint FILE");
-  if (!checkpoints.restart.empty() && !std::filesystem::is_regular_file(checkpoints.restart))
-    throw UsageError("--restart", "no checkpoint file '" + checkpoints.restart + "'");
+  if (!checkpoints.restart.empty()) {
+    // A path that exists but holds no checkpoint (/dev/null, a directory, an empty file) is
+    // named as what it is: "no checkpoint file" reads as a mistyped name.
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const std::string& restart = checkpoints.restart;
+    if (!fs::exists(restart, ec))
+      throw UsageError("--restart", "no checkpoint file '" + restart + "'");
+    if (!fs::is_regular_file(restart, ec))
+      throw UsageError("--restart", "'" + restart +
+                                        "' is not a regular file (a checkpoint is one, as "
+                                        "--checkpoint FILE wrote it)");
+    if (fs::file_size(restart, ec) == 0)
+      throw UsageError("--restart", "'" + restart + "' is empty (no checkpoint in it)");
+  }
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {
@@ -367,42 +380,18 @@ void run_simulate(const SimulateOptions& options) {
                              " (partial results in " + options.out + ")");
 }
 
-// The run's relaxation. Not given: its method's default. Given by a --config file that a run of
-// a method that does not relax wrote (a DSMC result's header, whose 0 that method forced) to a
-// run of a method that relaxes (`--config dsmc.csv --method edmd`): that 0 is no choice of the
-// user's, and would start EDMD from its lattice, unrelaxed, without a word; the method's default
-// is taken instead, with a note naming it and --relax 0, which keeps none. Kept as given: a flag
-// (--relax 0 included), a file whose method relaxes, a value other than 0 (typed into the file).
+// The run's relaxation. Not given: its method's default. Given by a --config file that a run of a
+// method that does not relax wrote, to a run that relaxes: the default as well, with a note
+// (take_default_over_forced_relaxation, the rule the sweep shares).
 void choose_relaxation(sim::Parameters& p, const CLI::Option& relax, const std::string& config) {
   if (relax.count() == 0) {
     sim::default_relaxation_for_method(p);
     return;
   }
-  if (config.empty() || config_file_that_set(relax.get_name()) != config ||
-      !sim::method_relaxes(p.method) || p.relax_collisions_per_particle != 0)
-    return;
-  const sim::ParameterInfo& method = *sim::find_parameter("method");
-  const std::vector<std::string> written = config_file_values(config, std::string(method.flag));
-  if (written.size() != 1) return;
-  sim::Parameters of_file;
-  try {
-    sim::parse_value(of_file, method, written[0]);
-  } catch (const std::invalid_argument&) {  // checked when the file was read
-    return;
-  }
-  if (sim::method_relaxes(of_file.method)) return;
-  p.relax_collisions_per_particle = sim::Parameters{}.relax_collisions_per_particle;  // the default
-  const auto upper = [](std::string text) {
-    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-  };
-  std::fprintf(stderr,
-               "note: --config %s: relax_collisions_per_particle = 0 was %s's (it does not "
-               "relax); this %s run relaxes %s collisions per particle, the default (--relax 0 "
-               "for none)\n",
-               config.c_str(), upper(sim::format_value(of_file, method)).c_str(),
-               upper(sim::format_value(p, method)).c_str(),
-               sim::format_value(p, *sim::find_parameter("relax_collisions_per_particle")).c_str());
+  const std::string method = upper_case(sim::format_value(p, *sim::find_parameter("method")));
+  take_default_over_forced_relaxation(p.relax_collisions_per_particle, relax, config,
+                                      sim::method_relaxes(p.method),
+                                      "this " + method + " run relaxes");
 }
 
 }  // namespace

@@ -38,6 +38,7 @@ struct SweepCliOptions {
   bool t_end_tau0_given = false, t_end_elastic_given = false, target_error_given = false;
   bool threads_given = false;
   std::string config;  // the --config file read (empty: none), which --out may not replace
+  const CLI::Option* relax = nullptr;  // --relax, whose value may come from the --config file
 };
 
 // Options that apply only to cooling (restitution < 1) or only to elastic (restitution 1) points
@@ -75,8 +76,20 @@ void run_sweep_command(SweepCliOptions& o) {
   const sim::ParameterInfo& method_row = *sim::find_parameter("method");
   for (const auto& m : o.methods)  // checked by the option
     o.spec.methods.push_back(static_cast<sim::Method>(*sim::find_choice(method_row, m)));
-  // The default relaxation is EDMD's: a sweep none of whose methods relaxes records none.
-  if (!o.relax_given) validation::default_relaxation_for_methods(o.spec);
+  // The default relaxation is EDMD's: a sweep none of whose methods relaxes records none. A 0
+  // from a --config file of a method that does not relax (a DSMC result) is no choice of the
+  // user's: the relaxing runs take the default, as simulate's do.
+  if (!o.relax_given) {
+    validation::default_relaxation_for_methods(o.spec);
+  } else if (o.relax != nullptr) {
+    std::string relaxing;
+    for (const auto& m : o.methods)
+      if (sim::method_relaxes(static_cast<sim::Method>(*sim::find_choice(method_row, m))))
+        relaxing += (relaxing.empty() ? "" : ", ") + upper_case(m);
+    take_default_over_forced_relaxation(o.spec.relax_collisions_per_particle, *o.relax, o.config,
+                                        !relaxing.empty(),
+                                        "the " + relaxing + " runs of this sweep relax");
+  }
   const std::string remedy = "each point once (use --seeds for more runs per point)";
   reject_repeated_values("--density", o.spec.densities, remedy);
   reject_repeated_values("--restitution", o.spec.restitutions, remedy);
@@ -273,6 +286,7 @@ void add_sweep_command(CLI::App& app) {
   set_callback_with_config(cmd, [o, relax, max_seeds, target_error, t_end_tau0, t_end_elastic,
                                  threads](const std::string& config) {
     o->config = config;
+    o->relax = relax;
     o->relax_given = relax->count() > 0;
     o->max_seeds_given = max_seeds->count() > 0;
     o->target_error_given = target_error->count() > 0;

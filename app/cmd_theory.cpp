@@ -266,7 +266,18 @@ void add_theory_command(CLI::App& app) {
       "theory", "Kinetic-theory prediction (g2, a2, μ2, τ0, A) and the paper's coefficients");
   add_parameter_option(cmd, "dimension", options->dimension);
   add_parameter_option(cmd, "restitution", options->restitution);
-  add_parameter_option(cmd, "density", options->density);
+  // The table's text names the densest start of N particles as well, which a run builds and
+  // theory does not (its gas is that of N → ∞; --particles sizes only the box of its modes): what
+  // theory checks is close packing (validate_theory_inputs) and, for a tiny n, that τ0 and A stay
+  // finite (compute_report).
+  add_parameter_option(cmd, "density", options->density)
+      ->description(fmt::format(
+          "Reduced density n = N sigma^d / V, below close packing ({:.6g} for d = 2, {:.6g} for "
+          "d = 3) and above the n where τ0 or A overflows a double (a refusal names the range); "
+          "theory places no particles, so the densest start a run of N allows is not checked "
+          "[{}]",
+          theory::close_packing_density(2), theory::close_packing_density(3),
+          parameter_row("density").unit));
   // b's range depends on --dim and --restitution: a text that is no finite number is kept and
   // refused once they are known (validate_theory_inputs), with the real range; a shared
   // real_in(-inf, inf) would name an infinite range that is not b's.

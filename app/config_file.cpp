@@ -2,6 +2,7 @@
 #include "config_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -67,6 +68,26 @@ Kind kind_of(const std::string& text) {
     return columns ? Kind::csv : Kind::toml;
   }
   return text.find("\n# version = ") != std::string::npos ? Kind::csv : Kind::toml;
+}
+
+// The offset of the first NUL byte or byte that is no part of UTF-8 in `text`, npos where none;
+// a character cut at the end of `text` (a prefix of a longer file) counts as text.
+std::size_t first_binary_byte(std::string_view text) {
+  for (std::size_t at = 0; at < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[at]);
+    if (byte == 0) return at;
+    const std::size_t length = byte < 0x80                   ? 1
+                               : byte >= 0xC2 && byte < 0xE0 ? 2
+                               : byte >= 0xE0 && byte < 0xF0 ? 3
+                               : byte >= 0xF0 && byte < 0xF5 ? 4
+                                                             : 0;
+    if (length == 0) return at;
+    for (std::size_t k = 1; k < length; ++k)
+      if (at + k < text.size() && (static_cast<unsigned char>(text[at + k]) & 0xC0) != 0x80)
+        return at;
+    at += length;
+  }
+  return std::string::npos;
 }
 
 // The words of a value, split at spaces (a list such as snapshot_times "0 1 10").
@@ -228,7 +249,7 @@ ConfigFile read_config_file(const std::string& path) {
     if (!std::filesystem::is_regular_file(path, ec))
       throw UsageError("--config", path + ": an HDF5 file is read from a regular file, not a pipe");
     try {
-      return {io::read_h5md_parameters(path), true, true, {}};
+      return {io::read_h5md_parameters(path), true, true, {}, {}};
     } catch (const std::runtime_error& e) {
       throw UsageError("--config", e.what());
     }
@@ -244,13 +265,26 @@ ConfigFile read_config_file(const std::string& path) {
     throw UsageError("--config", path + ": empty (no settings to read)");
   std::istringstream lines(text);
   if (text.starts_with(sim::k_checkpoint_magic))
-    return {read_checkpoint_head(text, path), true, true, {}};
+    return {read_checkpoint_head(text, path), true, true, {}, {}};
+  // The other kinds are text (TOML is UTF-8, the result files are written so): a NUL byte or a
+  // byte that is no UTF-8 in the first 64 KiB marks a binary file, which the TOML reader would
+  // refuse as "expected key = value" on its first line, as if a line were mistyped. (An endless
+  // input, /dev/zero, is refused below as such.)
+  if (const std::size_t at = first_binary_byte(std::string_view(text).substr(0, 1 << 16));
+      !cut && at != std::string::npos)
+    throw UsageError("--config", path + ": not a text file (byte " + std::to_string(at + 1) +
+                                     " is no UTF-8 text): --config reads a TOML file, a result "
+                                     "CSV, an extended XYZ file, an H5MD trajectory or a "
+                                     "checkpoint");
   switch (kind_of(text)) {
     case Kind::xyz:
-      return {read_xyz_header(lines, path), true, true, {}};
+      return {read_xyz_header(lines, path), true, true, {}, {}};
     case Kind::csv:
-      return {read_csv_header(lines, path), true, text.starts_with(sim::k_run_title),
-              writer_named(text)};
+      return {read_csv_header(lines, path),
+              true,
+              text.starts_with(sim::k_run_title),
+              writer_named(text),
+              {}};
     case Kind::toml:
       if (ends_with(path, ".csv") && !text.starts_with("#"))
         throw UsageError("--config",
@@ -260,13 +294,14 @@ ConfigFile read_config_file(const std::string& path) {
                                          ": longer than 16 MiB and not a result file; a file "
                                          "of options is a few lines of key = value");
       {
-        ConfigItems items = read_toml(lines, path);
+        std::map<std::string, std::string> quoted_numbers;
+        ConfigItems items = read_toml(lines, path, quoted_numbers);
         // Comments alone set nothing either: the defaults would run in place of the meant run.
         if (items.empty()) throw UsageError("--config", path + ": no settings (comments only)");
         // A run's parameters as --write-config wrote them are a run's file like its CSV: another
         // command takes the state point from it and names what it has no option for.
         const bool run_parameters = text.starts_with(k_parameters_title);
-        return {std::move(items), run_parameters, run_parameters, {}};
+        return {std::move(items), run_parameters, run_parameters, {}, std::move(quoted_numbers)};
       }
   }
   return {};
@@ -282,29 +317,61 @@ void add_config_option(CLI::App* cmd, std::string& path) {
 }
 
 namespace {
-// Options whose value came from a --config file (no flag given for them), by long name.
-std::map<std::string, std::string>& values_from_files() {
-  static std::map<std::string, std::string> set;
-  return set;
-}
-}  // namespace
+// What a --config file (or a --restart checkpoint, read the same way) gave an option, by (file,
+// option's long name): the values it wrote, and whether they are the option's, which they are
+// not where a flag on the command line, or a file read before, had given it one. One record
+// answers both who set an option and what a file wrote for it.
+struct FileValues {
+  std::vector<std::string> values;
+  bool set = false;
+};
 
-std::string config_file_that_set(const std::string& flag) {
-  const auto it = values_from_files().find(flag);
-  return it == values_from_files().end() ? std::string() : it->second;
-}
-
-namespace {
-// (file, option's long name) -> the values the file gave it, a flag overriding them or not.
-std::map<std::pair<std::string, std::string>, std::vector<std::string>>& values_in_files() {
-  static std::map<std::pair<std::string, std::string>, std::vector<std::string>> values;
+std::map<std::pair<std::string, std::string>, FileValues>& values_in_files() {
+  static std::map<std::pair<std::string, std::string>, FileValues> values;
   return values;
 }
 }  // namespace
 
+std::string config_file_that_set(const std::string& flag) {
+  for (const auto& [key, file] : values_in_files())
+    if (key.second == flag && file.set) return key.first;
+  return {};
+}
+
 std::vector<std::string> config_file_values(const std::string& path, const std::string& flag) {
   const auto it = values_in_files().find({path, flag});
-  return it == values_in_files().end() ? std::vector<std::string>() : it->second;
+  return it == values_in_files().end() ? std::vector<std::string>() : it->second.values;
+}
+
+bool take_default_over_forced_relaxation(double& relax, const CLI::Option& option,
+                                         const std::string& config, bool runs_relax,
+                                         const std::string& relaxing_runs) {
+  if (config.empty() || !runs_relax || relax != 0 ||
+      config_file_that_set(option.get_name()) != config)
+    return false;
+  const sim::ParameterInfo& method = *sim::find_parameter("method");
+  const std::vector<std::string> written = config_file_values(config, std::string(method.flag));
+  if (written.size() != 1) return false;
+  sim::Parameters of_file;
+  try {
+    sim::parse_value(of_file, method, written[0]);
+  } catch (const std::invalid_argument&) {  // checked when the file was read
+    return false;
+  }
+  if (sim::method_relaxes(of_file.method)) return false;
+  const sim::Parameters defaults;
+  relax = defaults.relax_collisions_per_particle;
+  std::cerr << "note: --config " << config << ": relax_collisions_per_particle = 0 was "
+            << upper_case(sim::format_value(of_file, method)) << "'s (it does not relax); "
+            << relaxing_runs << " "
+            << sim::format_value(defaults, *sim::find_parameter("relax_collisions_per_particle"))
+            << " collisions per particle, the default (--relax 0 for none)\n";
+  return true;
+}
+
+std::string upper_case(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
 }
 
 namespace {
@@ -358,7 +425,7 @@ std::string parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const 
 
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const auto [items, result_file, run_header, writer] = read_config_file(path);
+  const auto [items, result_file, run_header, writer, quoted_numbers] = read_config_file(path);
   if (run_header) check_run_header_complete(items, path);
   // A table of another command (a sweep summary given to theory): its keys are that command's
   // options, which would be refused one by one as unknown, as if the file were damaged.
@@ -399,7 +466,26 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
-    values_in_files()[{path, op->get_name()}] = values;
+    // TOML types its values: "100" is a string, which an option that takes numbers would read as
+    // the number without a word where the file's writer may have meant another type.
+    if (const auto quoted = quoted_numbers.find(key); quoted != quoted_numbers.end()) {
+      bool takes_numbers = true;
+      try {
+        op->get_validator(k_number_check);
+      } catch (const CLI::OptionNotFound&) {
+        takes_numbers = false;
+      }
+      std::string bare;
+      for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
+      if (takes_numbers)
+        throw UsageError("--config", quoted->second + ": key '" + key + "': " + op->get_name() +
+                                         " takes a number, and the value is a string in quotes; "
+                                         "write the number bare (" +
+                                         key + " = " +
+                                         (values.size() == 1 ? bare : "[" + bare + "]") + ")");
+    }
+    FileValues& record = values_in_files()[{path, op->get_name()}];
+    record.values = values;
     if (values.empty()) {
       // An empty list leaves the option at its default: right for a list whose default is no
       // values (snapshot_times, which --write-config writes as [] and the CSV header as nothing
@@ -435,7 +521,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       op->add_result(given);
       op->run_callback();
     } else {
-      values_from_files()[op->get_name()] = path;
+      record.set = true;
     }
   }
   // A result file of another command (a run's CSV given to bench) would run the defaults.

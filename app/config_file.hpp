@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iosfwd>
+#include <map>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -37,6 +38,9 @@ struct ConfigFile {
   /// The command that wrote a result CSV, from its title line ("# molchaos sweep summary ..."):
   /// empty where the file names none.
   std::string writer;
+  /// A TOML file's keys whose value is a string that reads as a number ("100"), with the place
+  /// of each ("path line N"): refused for an option that takes numbers.
+  std::map<std::string, std::string> quoted_numbers;
 };
 
 /// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters, an extended XYZ
@@ -61,6 +65,20 @@ std::string config_file_that_set(const std::string& flag);
 /// The values the --config file `path` gave the option `flag` (its long name, "--method"), read
 /// whether or not a flag on the command line overrode them; empty where the file names none.
 std::vector<std::string> config_file_values(const std::string& path, const std::string& flag);
+
+/// A relaxation of 0 that the --config file `config` gave (`option`, no flag overriding it) and a
+/// run of a method that does not relax wrote (a DSMC result's header, whose 0 that method forced),
+/// read by a command whose runs relax (`runs_relax`: `--config dsmc.csv --method edmd`): that 0
+/// is no choice of the user's, and would start EDMD from its lattice, unrelaxed, without a word.
+/// Sets `relax` to the default instead and notes it on stderr ("...; <relaxing_runs> 20
+/// collisions per particle, the default (--relax 0 for none)"); returns whether it did. Kept as
+/// given: a flag (--relax 0 included), a file whose method relaxes, a value other than 0.
+bool take_default_over_forced_relaxation(double& relax, const CLI::Option& option,
+                                         const std::string& config, bool runs_relax,
+                                         const std::string& relaxing_runs);
+
+/// The text in capitals ("edmd" -> "EDMD"), as the notes name a method.
+std::string upper_case(std::string text);
 
 /// cmd's callback: reads --config FILE (added here) into the options not given as flags, then
 /// runs `action`, given the file's path (empty: none) where it takes one, so that a command

@@ -2,7 +2,9 @@
 #include "toml_reader.hpp"
 
 #include <cctype>
+#include <cstdlib>
 #include <istream>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -111,14 +113,37 @@ std::string number_without_underscores(const std::string& text, const std::strin
   return number;
 }
 
-// One TOML value: a string (toml_string), or a bare number/boolean.
-std::string toml_scalar(const std::string& text, const std::string& where) {
+// Whether a string reads in full as a number ("100", "0.5"): written in quotes, it is a TOML
+// string, which an option that takes numbers refuses (apply_config_file).
+bool reads_as_number(const std::string& text) {
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())) != 0) return false;
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
+// One TOML value: a string (toml_string), or a bare number/boolean. A bare word is no TOML value
+// (randomize = paper): refused, naming the key, where quotes are meant. `quoted_number` is set
+// where the value is a string that reads as a number.
+std::string toml_scalar(const std::string& text, const std::string& where, const std::string& key,
+                        bool& quoted_number) {
   if (text.empty()) throw UsageError("--config", where + ": missing value");
   if (text.front() == '{')
     throw UsageError("--config", where + ": inline tables are not used; write key = value lines");
-  if (text.front() == '"' || text.front() == '\'') return toml_string(text, where);
+  if (text.front() == '"' || text.front() == '\'') {
+    std::string value = toml_string(text, where);
+    quoted_number = quoted_number || reads_as_number(value);
+    return value;
+  }
   if (text.front() == '[')
     throw UsageError("--config", where + ": arrays inside arrays are not used; give one list");
+  // TOML's bare values start with a digit or a sign, or are true, false, inf and nan.
+  if (std::isalpha(static_cast<unsigned char>(text.front())) != 0 && text != "true" &&
+      text != "false" && text != "inf" && text != "nan")
+    throw UsageError("--config", where + ": key '" + key + "': '" + text +
+                                     "' is no TOML value: a string is written in quotes (" + key +
+                                     " = \"" + text +
+                                     "\"), a boolean as true or false, a number bare");
   return number_without_underscores(text, where);
 }
 
@@ -137,7 +162,8 @@ void track_quote(char& quote, bool& escaped, char c) {
 }
 
 // Splits at the top-level commas of an array's inside (commas inside strings are kept).
-std::vector<std::string> toml_array(const std::string& inside, const std::string& where) {
+std::vector<std::string> toml_array(const std::string& inside, const std::string& where,
+                                    const std::string& key, bool& quoted_number) {
   std::vector<std::string> values;
   std::string item;
   char quote = 0;
@@ -147,7 +173,7 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
       // An empty element ([1,, 2]) is no TOML: dropping it would run the list without a word.
       if (trim(item).empty())
         throw UsageError("--config", where + ": an empty element in an array");
-      values.push_back(toml_scalar(trim(item), where));
+      values.push_back(toml_scalar(trim(item), where, key, quoted_number));
       item.clear();
       continue;
     }
@@ -155,7 +181,7 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
     item += c;
   }
   // A trailing comma is TOML ([1, 2,]); an empty array ([]) holds no element.
-  if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where));
+  if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where, key, quoted_number));
   return values;
 }
 
@@ -172,7 +198,8 @@ std::string strip_comment(const std::string& line) {
 
 }  // namespace
 
-ConfigItems read_toml(std::istream& in, const std::string& path) {
+ConfigItems read_toml(std::istream& in, const std::string& path,
+                      std::map<std::string, std::string>& quoted_numbers) {
   ConfigItems items;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -187,13 +214,17 @@ ConfigItems read_toml(std::istream& in, const std::string& path) {
     if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
       key = key.substr(1, key.size() - 2);
     const std::string value = trim(text.substr(eq + 1));
+    bool quoted_number = false;
     if (!value.empty() && value.front() == '[') {
       if (value.back() != ']')
         throw UsageError("--config", where + ": an array must close on its line");
-      items.emplace_back(key, toml_array(value.substr(1, value.size() - 2), where));
+      items.emplace_back(key,
+                         toml_array(value.substr(1, value.size() - 2), where, key, quoted_number));
     } else {
-      items.emplace_back(key, std::vector<std::string>{toml_scalar(value, where)});
+      items.emplace_back(key,
+                         std::vector<std::string>{toml_scalar(value, where, key, quoted_number)});
     }
+    if (quoted_number) quoted_numbers.emplace(key, where);
   }
   return items;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <map>
 #include <string>
 
 #include "config_file.hpp"
@@ -13,7 +14,11 @@ namespace molchaos::app {
 
 /// The items of a TOML file, in file order, each value as its option reads it (strings without
 /// quotes); throws UsageError("--config", ...) naming `path` and the line of a syntax error.
-ConfigItems read_toml(std::istream& in, const std::string& path);
+/// `quoted_numbers` receives each key whose value (or an element of it) is a string that reads
+/// as a number ("100"), with its place ("path line N"): TOML's types are lost in the items, and
+/// an option that takes numbers refuses such a string (apply_config_file).
+ConfigItems read_toml(std::istream& in, const std::string& path,
+                      std::map<std::string, std::string>& quoted_numbers);
 
 /// `text` without the spaces, tabs and carriage returns around it.
 std::string trim(const std::string& text);

@@ -5,7 +5,7 @@
 # a head edited to other parameters or to a value that is no number, a t_end before the
 # checkpoint's time; a --checkpoint or snapshot name holding a file that the run would lose (one
 # that is no checkpoint, or the checkpoint of a run it does not continue); and
-# --checkpoint-interval without --checkpoint.
+# --checkpoint-interval without --checkpoint; a --restart path that is no file, or empty.
 set -u
 bin=$(realpath "$1")
 expect=$(realpath "$2")
@@ -81,6 +81,12 @@ refused "--out: mine.snapshot0.csv, the name of this run's snapshot 0, holds a f
   "${args[@]}" --t-end 5 --snapshot-times 1 --out mine.csv
 [ "$(cat mine.snapshot0.csv)" = "$(printf 'x,y\n1,2')" ] || fail "the user's file at a snapshot name was changed"
 [ ! -e c.csv ] && [ ! -e mine.csv ] || fail "a refused run wrote its CSV"
+# A path that holds no checkpoint is named as what it is (was: "no checkpoint file", as for a
+# mistyped name).
+refused "--restart: '/dev/null' is not a regular file" "${args[@]}" --out b.csv --restart /dev/null
+: >empty.ckpt
+refused "--restart: 'empty.ckpt' is empty" "${args[@]}" --out b.csv --restart empty.ckpt
+refused "--restart: no checkpoint file 'missing.ckpt'" "${args[@]}" --out b.csv --restart missing.ckpt
 refused "--checkpoint-interval: needs --checkpoint FILE" \
   "${args[@]}" --out b.csv --checkpoint-interval 5
 [ ! -e b.csv ] && [ ! -e b.toml ] || fail "an output written by a refused restart: $(ls b.*)"

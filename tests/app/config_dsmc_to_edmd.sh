@@ -3,7 +3,7 @@
 # A DSMC result's header records relax 0, which DSMC forces: an EDMD run configured from it
 # (--config dsmc.csv --method edmd) relaxes by EDMD's default, with a note, rather than starting
 # unrelaxed without a word; --relax 0 given as a flag keeps none, without a note; the DSMC run
-# repeated from its header is the same bytes, without a note.
+# repeated from its header is the same bytes, without a note; a sweep from it does the same.
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
@@ -34,3 +34,21 @@ cmp -s <(grep -v '^# wall' none.csv) <(grep -v '^# wall' none_again.csv) || fail
 cmp -s <(grep -v '^# wall' dsmc.csv) <(grep -v '^# wall' again.csv) || fail "the DSMC re-run differs"
 ! grep -q "^note:" again.err || fail "a note on the DSMC re-run: $(cat again.err)"
 echo "ok: --relax 0 as a flag and an EDMD file's 0 kept; the DSMC run repeats byte for byte"
+# A sweep configured from the DSMC file takes the same rule (was: its EDMD runs unrelaxed, without
+# a word); --relax 0 as a flag keeps none.
+sweep=(sweep --config dsmc.csv --method edmd --seeds 1 --t-end-tau0 0.5 --cache '' --threads 1 --quiet)
+"$bin" "${sweep[@]}" --out sweep.csv >/dev/null 2>sweep.err
+[ -s sweep.csv ] || fail "no sweep summary: $(cat sweep.err)"
+grep -qx '# relax_collisions_per_particle = 20' sweep.csv ||
+  fail "the sweep from dsmc.csv does not take EDMD's default relaxation: $(grep '^# relax' sweep.csv)"
+grep -qx "note: --config dsmc.csv: relax_collisions_per_particle = 0 was DSMC's (it does not relax); the EDMD runs of this sweep relax 20 collisions per particle, the default (--relax 0 for none)" sweep.err ||
+  fail "no note on the relaxation of the sweep from dsmc.csv: $(cat sweep.err)"
+"$bin" "${sweep[@]}" --relax 0 --out sweep_none.csv >/dev/null 2>sweep_none.err
+grep -qx '# relax_collisions_per_particle = 0' sweep_none.csv || fail "--relax 0 as a flag not kept by the sweep"
+! grep -q "relax_collisions_per_particle = 0 was" sweep_none.err || fail "a note with --relax 0: $(cat sweep_none.err)"
+# The DSMC sweep it repeats records none, without a note.
+"$bin" sweep --config dsmc.csv --seeds 1 --t-end-tau0 0.5 --cache '' --threads 1 --quiet \
+  --out sweep_dsmc.csv >/dev/null 2>sweep_dsmc.err
+grep -qx '# relax_collisions_per_particle = 0' sweep_dsmc.csv || fail "the DSMC sweep records a relaxation"
+! grep -q "relax_collisions_per_particle = 0 was" sweep_dsmc.err || fail "a note on the DSMC sweep: $(cat sweep_dsmc.err)"
+echo "ok: a sweep from a DSMC file relaxes its EDMD runs by the default, with a note"

@@ -277,5 +277,22 @@ refused "--out: 'cache/../cache/s.csv' lies in the --cache folder 'cache', whose
 printf '# molchaos run\n# version = x\n# randomize = pa\033[31mper\n# t_end = 1\nt,T\n' >escape.csv
 refused "--config: escape.csv: key 'randomize': --randomize: unknown value 'pa\\\\x1b\\[31mper'" \
   simulate --config escape.csv
+# A binary file is no text config (was: "line 1: expected key = value", as if a line were
+# mistyped).
+{ printf 'x'; head -c 200 /dev/urandom; printf '\0'; } >binary.cfg
+refused "--config: binary.cfg: not a text file .*TOML file, a result CSV, an extended XYZ file, an H5MD trajectory" \
+  simulate --config binary.cfg
+# TOML types its values: a bare word is no value (was: read as the string), a quoted number is a
+# string, refused for an option that takes a number (was: read as the number).
+printf 'particles = 100\nrandomize = paper\n' >bare.toml
+refused "--config: bare.toml line 2: key 'randomize': 'paper' is no TOML value: a string is written in quotes \\(randomize = \"paper\"\\)" \
+  simulate --config bare.toml
+printf 'density = [0.1, none]\n' >bare_list.toml
+refused "--config: bare_list.toml line 1: key 'density': 'none' is no TOML value" sweep --config bare_list.toml
+printf 'randomize = "paper"\nparticles = "100"\n' >quoted.toml
+refused "--config: quoted.toml line 2: key 'particles': --particles takes a number, and the value is a string in quotes; write the number bare \\(particles = 100\\)" \
+  simulate --config quoted.toml
+printf 'density = [0.1, "0.2"]\n' >quoted_list.toml
+refused "--config: quoted_list.toml line 1: key 'density': --density takes a number" sweep --config quoted_list.toml
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"
