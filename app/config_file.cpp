@@ -187,6 +187,8 @@ ConfigItems read_xyz_header(std::istream& in, const std::string& path) {
       at = std::min(comment.find(' ', eq), comment.size());
       value = comment.substr(eq + 1, at - eq - 1);
     }
+    // Extended XYZ's logicals: the writer gives the run's flags as T and F, as ASE reads them.
+    if (value == "T" || value == "F") value = value == "T" ? "true" : "false";
     if (k_frame_keys.count(key) == 0) items.emplace_back(key, words(value));
   }
   if (items.empty())

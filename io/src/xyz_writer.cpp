@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <variant>
 
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/sim/parameter_table.hpp"
@@ -25,10 +26,14 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
       << "Properties=species:S:1:pos:R:3:vel:R:3:momenta:R:3 Time=" << sim::round_trip_text(s.t)
       << " Collisions=" << s.collisions << " pbc=\"" << (dimension == 3 ? "T T T" : "T T F") << '"'
       << " version=" << r.version;  // --config notes a file of another version
-  // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted.
+  // The run's parameters as in a result CSV's header, a value with spaces (a list) quoted, a
+  // flag as extended XYZ's logical T or F: ASE reads "false" as a string, which Python takes for
+  // true (--config reads T and F back).
   for (const sim::ParameterInfo& info : sim::parameter_table()) {
     if (sim::omitted(r.parameters, info)) continue;
-    const std::string value = sim::format_value(r.parameters, info);
+    std::string value = sim::format_value(r.parameters, info);
+    if (std::holds_alternative<bool sim::Parameters::*>(info.field))
+      value = r.parameters.*std::get<bool sim::Parameters::*>(info.field) ? "T" : "F";
     const bool quote = value.empty() || value.find(' ') != std::string::npos;
     out << ' ' << info.name << '=' << (quote ? "\"" + value + "\"" : value);
   }

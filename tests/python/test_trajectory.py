@@ -92,6 +92,10 @@ def test_extended_xyz_read_by_ase(run):
         assert atoms.cell[0, 0] == meta["box"] and atoms.cell[1, 1] == meta["box"]
         assert list(atoms.pbc) == [True, True, dim == 3]
         assert atoms.info["Time"] == meta["t"]
+        # The run's flags are logicals (T, F), which ASE reads as bools: "false" was a string,
+        # which Python takes for true.
+        assert atoms.info["contact_statistics"] is False
+        assert not any(v in ("true", "false") for v in atoms.info.values() if isinstance(v, str))
     assert [atoms.info["Collisions"] for atoms in frames] == list(collisions_at_snapshots(d))
 
 
