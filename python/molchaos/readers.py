@@ -211,6 +211,13 @@ def read_table(path):
     """A summary table of `molchaos reproduce` (e.g. fig4_A_of_eps.csv): (DataFrame, metadata
     from its `#` lines, possibly empty)."""
     path = _file_name(path)
+    # An extended XYZ file (a particle count, then a comment line of key=value pairs) would read
+    # as a table of one column named by the count (the run and snapshot readers refuse it by
+    # its columns).
+    with open(path, "rb") as f:
+        head = f.read(1 << 16).split(b"\n", 2)
+    if len(head) > 1 and head[0].strip().isdigit() and b"Properties=" in head[1]:
+        raise ValueError(f"{path}: an extended XYZ file, not a CSV table (ase.io.read reads it)")
     metadata, _ = _read_header(path)
     return _read_rows(path), metadata
 

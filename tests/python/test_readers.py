@@ -158,6 +158,12 @@ def test_a_quote_inside_a_field_is_no_quoted_field(tmp_path, text):
         molchaos.read_table(table)
 
 
+def test_an_extended_xyz_file_is_no_table(files):
+    # Was: read as a table of one column named by the particle count.
+    with pytest.raises(ValueError, match=r"run\.xyz: an extended XYZ file, not a CSV table"):
+        molchaos.read_table(files / "run.xyz")
+
+
 def test_a_carriage_return_alone_is_refused(tmp_path):
     # pandas ends a line there, so the short second row would be filled with NaN.
     table = tmp_path / "cr.csv"
