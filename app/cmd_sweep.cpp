@@ -83,9 +83,9 @@ void run_sweep_command(SweepCliOptions& o) {
     validation::default_relaxation_for_methods(o.spec);
   } else if (o.relax != nullptr) {
     std::string relaxing;
-    for (const auto& m : o.methods)
-      if (sim::method_relaxes(static_cast<sim::Method>(*sim::find_choice(method_row, m))))
-        relaxing += (relaxing.empty() ? "" : ", ") + upper_case(m);
+    for (std::size_t k = 0; k < o.methods.size(); ++k)  // o.spec.methods: the same, parsed
+      if (sim::method_relaxes(o.spec.methods[k]))
+        relaxing += (relaxing.empty() ? "" : ", ") + upper_case(o.methods[k]);
     take_default_over_forced_relaxation(o.spec.relax_collisions_per_particle, *o.relax, o.config,
                                         !relaxing.empty(),
                                         "the " + relaxing + " runs of this sweep relax");

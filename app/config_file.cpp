@@ -477,14 +477,15 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       } catch (const CLI::OptionNotFound&) {
         takes_numbers = false;
       }
-      std::string bare;
-      for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
-      if (takes_numbers)
+      if (takes_numbers) {
+        std::string bare;
+        for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
         throw UsageError("--config", quoted->second + ": key '" + key + "': " + op->get_name() +
                                          " takes a number, and the value is a string in quotes; "
                                          "write the number bare (" +
                                          key + " = " +
                                          (values.size() == 1 ? bare : "[" + bare + "]") + ")");
+      }
     }
     FileValues& record = values_in_files()[{path, op->get_name()}];
     record.values = values;

@@ -179,8 +179,8 @@ bool Engine<D, Observer>::relax(double collisions_per_particle, const std::funct
     };
     throw std::invalid_argument(
         "relax_collisions_per_particle: " + message_number(collisions_per_particle) +
-        " collisions per particle would take about " + estimate(expected_events) +
-        " events at this density (" + estimate(events_per_collision_) +
+        " collisions per particle would take " + estimated_count(expected_events, "events") +
+        " at this density (" + estimate(events_per_collision_) +
         " per collision, most of them cell crossings); allowed range [0, " +
         message_number(most) + "] here: relax less (0: none) or simulate a denser gas");
   }
