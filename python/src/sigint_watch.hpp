@@ -3,8 +3,9 @@
 // next executes Python code: after the run, which may take hours. While a run started from the main
 // thread goes on, a handler in front of Python's also asks the run to stop
 // (CheckpointOptions::interrupt): it stops at its next sample time or progress pause (at most 2^20
-// events, the relaxation's included), writes its checkpoint if it has a path and the relaxation is
-// done (a half-relaxed state has none), and KeyboardInterrupt is raised. Signals with other Python
+// events, the relaxation's included; while the initial state is built, within 2^16 particles),
+// writes its checkpoint if it has a path and the relaxation is done (a half-relaxed state has
+// none), and KeyboardInterrupt is raised. Signals with other Python
 // handlers (a SIGINT or SIGTERM handler of the caller's, an alarm) are run at the sample times and
 // progress pauses, and stop the run when they raise.
 #pragma once

@@ -4,7 +4,7 @@
 // the clock, the rebuild of cells, lists and calendar, cell storage, observables, debug checks.
 
 template <int D, class Observer>
-Engine<D, Observer>::Engine(const Parameters& p)
+Engine<D, Observer>::Engine(const Parameters& p, const std::atomic<bool>* interrupt)
     : model_(CollisionModel::from(p)), shuffle_rng_(p.seed ^ 0x243f6a8885a308d3ULL) {
   validate(p);
   if (p.dimension != D) throw std::invalid_argument("dimension: engine instantiated for another d");
@@ -96,7 +96,8 @@ Engine<D, Observer>::Engine(const Parameters& p)
   candidates_.resize(static_cast<std::size_t>(n_) + 1);
 
   Rng rng(p.seed);
-  const std::vector<double> positions = place_particles<D>(n_, box_, rng);
+  build_interrupt_ = interrupt;
+  const std::vector<double> positions = place_particles<D>(n_, box_, rng, interrupt);
   const std::vector<double> velocities = maxwell_velocities<D>(n_, rng);
   for (std::int32_t i = 0; i < n_; ++i)
     for (int a = 0; a < D; ++a) {
@@ -106,6 +107,7 @@ Engine<D, Observer>::Engine(const Parameters& p)
   sum_u2_ = sum_velocity_squared();
   build_cells();
   rebuild_events();
+  build_interrupt_ = nullptr;
 }
 
 template <int D, class Observer>
@@ -296,6 +298,7 @@ void Engine<D, Observer>::sort_by_cell() {
     const int bits = hilbert_bits(cells_per_side_);
     std::vector<std::uint64_t> key(n);
     for (std::size_t i = 0; i < n; ++i) {
+      stop_build_if_interrupted(build_interrupt_, static_cast<std::int64_t>(i));
       int x[D];
       coords_(ev_[i].cell, x);
       key[i] = outgrows_cache_ ? hilbert_index<D>(x, bits) : static_cast<std::uint64_t>(ev_[i].cell);
@@ -308,6 +311,7 @@ void Engine<D, Observer>::sort_by_cell() {
   // Permuted in place, cycle by cycle (a sorted copy of the arrays would raise the peak memory
   // of a large run by 60 bytes per particle): position k takes the particle order[k].
   for (std::size_t start = 0; start < n; ++start) {
+    stop_build_if_interrupted(build_interrupt_, static_cast<std::int64_t>(start));
     if (order[start] < 0) continue;
     const Particle particle = part_[start];
     const EventData event = ev_[start];  // its cell; the rest is predicted again
@@ -354,11 +358,13 @@ void Engine<D, Observer>::rebuild_events() {
   double width = calendar_.bucket_width();
   for (int pass = 0; pass < 2; ++pass) {
     calendar_.reset(n_, clock_.now, width, buckets);
-    for (std::int32_t i = 0; i < n_; ++i)
+    for (std::int32_t i = 0; i < n_; ++i) {
+      stop_build_if_interrupted(build_interrupt_, i);
       if (outgrows_cache_)
         predict<true>(i);  // the cells' links where predict<true> looks for them
       else
         predict<false>(i);
+    }
     double sum = 0;
     std::int32_t finite = 0;
     for (std::int32_t i = 0; i < n_; ++i) {

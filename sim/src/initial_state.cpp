@@ -73,7 +73,8 @@ std::string too_dense_message(int dimension, std::int64_t n, double box) {
 // Random sequential insertion on a grid of cells >= sigma while that is quick (low packing
 // fraction); otherwise a simple lattice with random vacancies and jitter. Relaxation melts either.
 template <int D>
-std::vector<double> place_particles(std::int32_t n, double box, Rng& rng) {
+std::vector<double> place_particles(std::int32_t n, double box, Rng& rng,
+                                    const std::atomic<bool>* interrupt) {
   const double half_box = 0.5 * box;
   std::vector<double> positions(static_cast<std::size_t>(n) * D);
   const double packing = (D == 2 ? std::numbers::pi / 4.0 : std::numbers::pi / 6.0) *
@@ -92,6 +93,7 @@ std::vector<double> place_particles(std::int32_t n, double box, Rng& rng) {
     constexpr int k_attempts = 100000;
     bool ok = true;
     for (std::int32_t i = 0; i < n && ok; ++i) {
+      stop_build_if_interrupted(interrupt, i);
       int attempt = 0;
       for (; attempt < k_attempts; ++attempt) {
         double r[D];
@@ -136,6 +138,7 @@ std::vector<double> place_particles(std::int32_t n, double box, Rng& rng) {
   // two sites stay more than 1 apart.
   const double jitter = 0.99 * (nearest - 1.0) / std::sqrt(static_cast<double>(D));
   for (std::int32_t i = 0; i < n; ++i) {
+    stop_build_if_interrupted(interrupt, i);
     const std::size_t pick =
         static_cast<std::size_t>(i) + static_cast<std::size_t>(rng.below(sites - i));
     std::swap(site[static_cast<std::size_t>(i)], site[pick]);
@@ -182,8 +185,10 @@ std::vector<double> maxwell_velocities(std::int32_t n, Rng& rng) {
   return v;
 }
 
-template std::vector<double> place_particles<2>(std::int32_t, double, Rng&);
-template std::vector<double> place_particles<3>(std::int32_t, double, Rng&);
+template std::vector<double> place_particles<2>(std::int32_t, double, Rng&,
+                                                const std::atomic<bool>*);
+template std::vector<double> place_particles<3>(std::int32_t, double, Rng&,
+                                                const std::atomic<bool>*);
 template std::vector<double> maxwell_velocities<2>(std::int32_t, Rng&);
 template std::vector<double> maxwell_velocities<3>(std::int32_t, Rng&);
 

@@ -6,15 +6,16 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
-#include <stdexcept>
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/engine.hpp"
+#include "molchaos/sim/initial_state.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/version.hpp"
@@ -113,7 +114,7 @@ std::optional<RunResult> run_d(const Parameters& p, const ProgressReporter& prog
            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   using RunEngine = Engine<D, Observer>;
-  RunEngine engine(p);
+  RunEngine engine(p, checkpoints.interrupt);  // InitialStateInterrupted: caught by the caller
   engine.check_run_length(p.t_end);  // before the relaxation, which it would waste
 
   RunResult result;
@@ -302,11 +303,15 @@ std::optional<RunResult> run_with_checkpoints(const Parameters& p, const Progres
     if (progress) fraction = [&](double f) { progress({f, 0, 0, 0.0}); };
     return run_dsmc(p, fraction);
   }
-  if (p.contact_statistics)
-    return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress, checkpoints)
-                            : run_d<3, ContactStatistics>(p, progress, checkpoints);
-  return p.dimension == 2 ? run_d<2, NoObserver>(p, progress, checkpoints)
-                          : run_d<3, NoObserver>(p, progress, checkpoints);
+  try {
+    if (p.contact_statistics)
+      return p.dimension == 2 ? run_d<2, ContactStatistics>(p, progress, checkpoints)
+                              : run_d<3, ContactStatistics>(p, progress, checkpoints);
+    return p.dimension == 2 ? run_d<2, NoObserver>(p, progress, checkpoints)
+                            : run_d<3, NoObserver>(p, progress, checkpoints);
+  } catch (const InitialStateInterrupted&) {  // before the relaxation: nothing to save
+    return std::nullopt;
+  }
 }
 
 RunResult run_with_progress(const Parameters& p, const ProgressReporter& progress) {

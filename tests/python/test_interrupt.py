@@ -149,3 +149,22 @@ def test_ctrl_c_during_the_relaxation_stops_the_run_promptly():
     words = run_script(INTERRUPT.format(delay=0.5, kwargs=LONG_RELAXATION)).split()
     assert words[0] == "interrupted"
     assert float(words[1]) < 5  # the first relaxation pause after the signal (2^20 events)
+
+
+# Two million disks: seconds to build (random positions, the sort by cell, the first predictions).
+LARGE_START = "dict(particles=2000000, density=0.05, relax_collisions_per_particle=0.0, t_end=1e-6)"
+
+
+def test_ctrl_c_while_a_large_initial_state_is_built_stops_it_promptly():
+    # Was: Ctrl-C was obeyed only once the whole initial state was built. The build's own time,
+    # measured in the same interpreter, is the yardstick (the machine's speed drifts).
+    words = run_script(f"""
+start = time.monotonic()
+molchaos.simulate(**{LARGE_START})
+built = time.monotonic() - start
+""" + INTERRUPT.format(delay=0.2, kwargs=LARGE_START) + """
+print(built)
+""").split()
+    assert words[0] == "interrupted"
+    interrupted, built = float(words[1]), float(words[2])
+    assert interrupted < 0.5 * built, (interrupted, built)

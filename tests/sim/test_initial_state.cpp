@@ -1,12 +1,14 @@
 // Unit tests of the initial state: positions in the box without overlap (random insertion and the
 // lattices), Maxwell velocities with zero momentum and T = 1, the same seed giving the same state,
-// and the error for a density no lattice reaches.
+// the error for a density no lattice reaches, and an interrupt of the build.
 #define BOOST_TEST_MODULE sim_initial_state
+#include <atomic>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "molchaos/sim/engine.hpp"
 #include "molchaos/sim/initial_state.hpp"
 
 using namespace molchaos::sim;
@@ -92,4 +94,25 @@ BOOST_AUTO_TEST_CASE(unreachable_density_names_the_reachable_one) {
     BOOST_TEST(message.find("too high") != std::string::npos);
     BOOST_TEST(message.find("reaches n <") != std::string::npos);
   }
+}
+
+BOOST_AUTO_TEST_CASE(a_set_interrupt_stops_the_build_and_an_unset_one_changes_nothing) {
+  const std::atomic<bool> set{true}, unset{false};
+  for (const double density : {0.05, 1.05}) {  // insertion, lattice
+    const double box = side<2>(1000, density);
+    Rng rng(3), again(3), stopped(3);
+    BOOST_TEST(
+        (place_particles<2>(1000, box, rng, &unset) == place_particles<2>(1000, box, again)));
+    BOOST_CHECK_THROW(place_particles<2>(1000, box, stopped, &set), InitialStateInterrupted);
+  }
+  Parameters p;
+  p.particles = 1000;
+  p.density = 0.05;
+  BOOST_CHECK_THROW(Engine<2>(p, &set), InitialStateInterrupted);
+  p.dimension = 3;
+  p.density = 0.6;  // neighbour lists
+  BOOST_CHECK_THROW(Engine<3>(p, &set), InitialStateInterrupted);
+  const Engine<3> built(p, &unset), plain(p);
+  BOOST_TEST((built.snapshot().positions == plain.snapshot().positions));
+  BOOST_TEST((built.snapshot().velocities == plain.snapshot().velocities));
 }

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -47,8 +48,10 @@ class Engine {
   /// Builds the initial state: random non-overlapping positions, Maxwell velocities with zero
   /// momentum and T = 1 exactly. Throws std::runtime_error when the density is too high to place
   /// the particles. Does not relax (call relax()). The collision model of the run (rule, TC,
-  /// shuffle) is CollisionModel::from(p), fixed for the engine's life.
-  explicit Engine(const Parameters& p);
+  /// shuffle) is CollisionModel::from(p), fixed for the engine's life. A set `interrupt` ends
+  /// the build with InitialStateInterrupted (initial_state.hpp), seen within 2^16 particles of
+  /// each step but the sort of the particles by cell.
+  explicit Engine(const Parameters& p, const std::atomic<bool>* interrupt = nullptr);
 
   /// A run with CollisionModel::elastic() for the given collisions per particle, then T rescaled
   /// to 1, time and counters reset to 0. Throws std::invalid_argument (naming
@@ -316,6 +319,9 @@ class Engine {
   // Data beyond the cache (decided at construction): wider cells for disks, prefetches, particles
   // numbered along a Hilbert curve.
   bool outgrows_cache_ = true;
+  // The constructor's interrupt, while it builds the initial state only: the rebuilds of a
+  // running engine (at a rescaling) go on, since a run stops only where it can be saved.
+  const std::atomic<bool>* build_interrupt_ = nullptr;
 
   // Time and units: physical t = t_offset + theta * tau, physical v = u / theta.
   InternalClock clock_;

@@ -3,7 +3,9 @@
 // elastic collision model (Engine::relax).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,13 +27,27 @@ double densest_start(int dimension, std::int64_t n, double box);
 /// "density X is too high to generate ... reaches n < Y for this N; close packing is Z".
 std::string too_dense_message(int dimension, std::int64_t n, double box);
 
+/// Thrown where the build of an initial state finds its interrupt flag set: at millions of
+/// particles the build takes seconds (about 2 µs a disk), too long to wait for a Ctrl-C.
+struct InitialStateInterrupted : std::runtime_error {
+  InitialStateInterrupted() : std::runtime_error("the initial state's build was interrupted") {}
+};
+
+/// Throws InitialStateInterrupted when `interrupt` is set, looking at it once in 2^16 steps
+/// (`step` counts them): a set flag is seen within milliseconds, at no measurable cost.
+inline void stop_build_if_interrupted(const std::atomic<bool>* interrupt, std::int64_t step) {
+  if ((step & 0xffff) == 0 && interrupt != nullptr && interrupt->load(std::memory_order_relaxed))
+    throw InitialStateInterrupted();
+}
+
 /// n non-overlapping unit spheres (pair distances > 1 + 1e-9) in [0, box)^D, particle-major.
 /// Random sequential insertion while the packing fraction is low (< 0.25 disks, < 0.2 spheres)
 /// and it succeeds; otherwise a lattice with random vacancies and jitter (d = 2: staggered rows,
 /// d = 3: simple cubic). Throws std::runtime_error naming the reachable density when even the
-/// lattice does not fit.
+/// lattice does not fit, and InitialStateInterrupted when `interrupt` is set.
 template <int D>
-std::vector<double> place_particles(std::int32_t n, double box, Rng& rng);
+std::vector<double> place_particles(std::int32_t n, double box, Rng& rng,
+                                    const std::atomic<bool>* interrupt = nullptr);
 
 /// D n Maxwell velocity components, particle-major, with zero total momentum and
 /// sum v^2 = n D (T = 1) up to rounding.
