@@ -29,8 +29,8 @@ std::string hydrodynamics_text(const theory::ReportInputs& in, const theory::The
   const auto& m = r.shear_mode;
   const auto& h = in.box;
   std::string s =
-      "\nlinear hydrodynamics of the HCS (Enskog, first Sonine; rates per collision "
-      "per particle)\n";
+      "\nlinear hydrodynamics of the HCS (Enskog, first Sonine, molecular chaos: b = 0 whatever "
+      "--b; rates per collision per particle)\n";
   s += fmt::format(
       "  η*, κ*, μ*, ζ*         {:.6g}, {:.6g}, {:.6g}, {:.6g}   (Garzó–Dufty's reduced units: "
       "η/η0, κ/κ0, nμ/(Tκ0), ζ/ν0; ν0/ω_E = {:.6g})\n",

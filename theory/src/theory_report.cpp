@@ -25,7 +25,8 @@ void require_box(const BoxInputs& box) {
 }
 
 // τ collisions per particle after time t of Haff's law: τ = ω_E(T0) τ0 ln(1 + t/τ0), since
-// ω_E ∝ √T = √T0/(1 + t/τ0); inverted for t.
+// ω_E ∝ √T = √T0/(1 + t/τ0); inverted for t. The τ0 is molecular chaos's (b = 0, whatever the
+// report's correlation_b), as are the transport coefficients the mode's rate comes from.
 LargestShearMode largest_shear_mode(const TransportCoefficients& c, const ReportInputs& in) {
   const int d = in.dimension;
   LargestShearMode m;
