@@ -5,7 +5,7 @@ measured (with its standard error) beside the kinetic theory, one curve per rand
         fig4.png
 """
 
-import sys
+import argparse
 
 import matplotlib
 
@@ -15,8 +15,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 import molchaos  # noqa: E402
 
 
+# The columns of `molchaos reproduce`'s fig4_A_of_eps.csv that the figure draws.
+FIG4_COLUMNS = {"density", "restitution", "randomize", "A", "A_err", "A_theory"}
+
+
 def main(table_path, png_path):
     table, meta = molchaos.read_table(table_path)
+    missing = FIG4_COLUMNS - set(table.columns)
+    if missing:
+        raise ValueError(f"{table_path}: not a Fig. 4 table (fig4_A_of_eps.csv): no column "
+                         f"{', '.join(sorted(missing))}")
     fig, ax = plt.subplots(figsize=(5, 4))
     for (density, mode), rows in table.groupby(["density", "randomize"]):
         rows = rows.sort_values("restitution")
@@ -38,4 +46,11 @@ def main(table_path, png_path):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "fig4.png")
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("table", help="fig4_A_of_eps.csv of `molchaos reproduce`")
+    parser.add_argument("png", nargs="?", default="fig4.png", help="the figure (default fig4.png)")
+    arguments = parser.parse_args()
+    try:
+        main(arguments.table, arguments.png)
+    except (OSError, ValueError) as error:
+        parser.error(str(error))

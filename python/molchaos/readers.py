@@ -109,6 +109,13 @@ def _read_rows(path):
     if re.search(rb"\r(?!\n)", data):  # pandas would end lines there, the count below would not
         raise ValueError(f"{path}: a carriage return alone ends a line (old Mac line ends); "
                          "the suite's files end their lines with LF or CR LF")
+    # A parameter file of `simulate --write-config` (TOML, key = value lines after its title)
+    # would read as a table of one column named by its first line.
+    first = next((line for line in data.splitlines() if line.strip()
+                  and not line.startswith(b"#")), b"")
+    if re.match(rb"\s*[A-Za-z_\"][A-Za-z0-9_\"-]*\s*=", first):
+        raise ValueError(f"{path}: a TOML file of key = value lines (`simulate --write-config`"
+                         "), not a CSV table (`molchaos simulate --config` reads it)")
     _check_field_counts(path, data)
     try:
         # index_col=False: a field more in every row is not an index column (checked above).

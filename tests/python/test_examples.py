@@ -59,3 +59,19 @@ def test_haff_ensemble_help_states_its_whole_purpose():
                          capture_output=True, text=True, timeout=60)
     assert out.returncode == 0
     assert "the runs' mean tau0 beside the kinetic theory's." in " ".join(out.stdout.split())
+
+
+@pytest.mark.parametrize("arguments,message", [
+    ([], "the following arguments are required: table"),
+    (["a2_of_eps.csv"], "a2_of_eps.csv: not a Fig. 4 table (fig4_A_of_eps.csv): no column A, "),
+    (["missing.csv"], "No such file or directory: 'missing.csv'"),
+])
+def test_fig4_from_csv_names_a_missing_or_wrong_table(tmp_path, arguments, message):
+    # Was: a traceback (IndexError without arguments, KeyError 'randomize' for another table).
+    (tmp_path / "a2_of_eps.csv").write_text(
+        "# molchaos reproduce\ndimension,density,restitution,source,a2,a2_err\n"
+        "2,0.05,0.9,none,-0.02,0.001\n")
+    out = subprocess.run([sys.executable, os.path.join(EXAMPLES, "fig4_from_csv.py"), *arguments],
+                         capture_output=True, text=True, timeout=60, cwd=tmp_path)
+    assert out.returncode == 2 and "Traceback" not in out.stderr
+    assert message in out.stderr

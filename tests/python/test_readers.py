@@ -164,6 +164,20 @@ def test_an_extended_xyz_file_is_no_table(files):
         molchaos.read_table(files / "run.xyz")
 
 
+@pytest.mark.parametrize("reader", [molchaos.read_run_csv, molchaos.read_snapshot_csv,
+                                    molchaos.read_table])
+def test_a_parameter_file_is_no_table(molchaos_bin, tmp_path, reader):
+    # Was: read_table gave a table of one column named by the file's first key = value line, the
+    # other readers a row "cut short" where an array holds a comma.
+    subprocess.run(
+        [molchaos_bin, "simulate", "--particles", "50", "--t-end", "1", "--relax", "0", "--quiet",
+         "--snapshot-times", "0.5", "--out", str(tmp_path / "run.csv"),
+         "--write-config", str(tmp_path / "run.toml")],
+        check=True, capture_output=True)
+    with pytest.raises(ValueError, match=r"run\.toml: a TOML file of key = value lines"):
+        reader(tmp_path / "run.toml")
+
+
 def test_a_carriage_return_alone_is_refused(tmp_path):
     # pandas ends a line there, so the short second row would be filled with NaN.
     table = tmp_path / "cr.csv"
