@@ -294,5 +294,16 @@ refused "--config: quoted.toml line 2: key 'particles': --particles takes a numb
   simulate --config quoted.toml
 printf 'density = [0.1, "0.2"]\n' >quoted_list.toml
 refused "--config: quoted_list.toml line 1: key 'density': --density takes a number" sweep --config quoted_list.toml
+# A seed beyond 2^63 - 1, which a TOML integer cannot hold (was: written bare, which strict TOML
+# readers refuse), is written in quotes and read back as the number; a smaller one stays bare.
+"$bin" simulate --particles 50 --t-end 1 --relax 0 --seed 18446744073709551615 --out big_seed.csv \
+  --write-config big_seed.toml --quiet 2>/dev/null || fail "run with the largest seed"
+grep -qx 'seed = "18446744073709551615"' big_seed.toml || fail "a seed beyond TOML's integers bare"
+"$bin" simulate --config big_seed.toml --out big_seed_again.csv --quiet 2>/dev/null ||
+  fail "run from the TOML of the largest seed"
+cmp big_seed.csv big_seed_again.csv || fail "the run of the largest seed repeated differs"
+"$bin" simulate --particles 50 --t-end 1 --relax 0 --seed 9223372036854775807 --out top.csv \
+  --write-config top.toml --quiet 2>/dev/null || fail "run with seed 2^63 - 1"
+grep -qx 'seed = 9223372036854775807' top.toml || fail "seed 2^63 - 1 not bare"
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"
