@@ -40,8 +40,8 @@ RunResult run_with_progress(const Parameters& p, const ProgressReporter& progres
 /// The same with checkpoints (checkpoint.hpp): writes them where and when `checkpoints` asks, and
 /// starts from checkpoints.restart when it names one (the result is then byte for byte the
 /// uninterrupted run's). Returns nothing when *checkpoints.interrupt was set: the checkpoint (if
-/// a path is given) holds the run at that point (none while the initial state is built or
-/// relaxed, which is looked at too). Throws CheckpointError for a checkpoint that does not fit p.
+/// a path is given) holds the run at that point (none when it was set while the initial state was
+/// built or relaxed). Throws CheckpointError for a checkpoint that does not fit p.
 std::optional<RunResult> run_with_checkpoints(const Parameters& p, const ProgressReporter& progress,
                                               const CheckpointOptions& checkpoints);
 
