@@ -372,6 +372,24 @@ BOOST_AUTO_TEST_CASE(run_notes_one_line_per_reason) {
   BOOST_TEST(note_lines({}).empty());
 }
 
+// Two runs that broke down at the same sample scatter by nothing; their mean is known only to the
+// sample grid's rounding, the error's floor (was: an error of 0).
+BOOST_AUTO_TEST_CASE(break_down_times_at_one_sample_carry_the_grids_rounding) {
+  sim::RunResult run;
+  run.parameters.particles = 1000;
+  run.parameters.restitution = 0.9;
+  run.samples = haff_samples(1.0, 50.0, 1000.0, 60);
+  run.samples[45].velocity_mode = run.samples[46].velocity_mode = 6.0;
+  const PointSummary s = summarize_point({&run, &run}, WindowRule{});
+  BOOST_TEST_REQUIRE(s.breakdowns == 2);
+  const double t = run.samples[45].t, width = t - run.samples[44].t;
+  BOOST_TEST(s.breakdown_time.value == t);
+  BOOST_TEST(s.breakdown_time.error == std::sqrt(2 * width * width / 12) / 2,
+             boost::test_tools::tolerance(1e-14));
+  BOOST_TEST(s.log_breakdown_time.error == std::log(t / run.samples[44].t) / std::sqrt(24.0),
+             boost::test_tools::tolerance(1e-14));
+}
+
 // A point where no run succeeded has no A: nan (printed as such in every table), not 0.
 BOOST_AUTO_TEST_CASE(a_point_without_successful_runs_has_no_value) {
   const PointSummary s = summarize_point({}, WindowRule{});

@@ -114,6 +114,7 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
                              const WindowRule& rule) {
   PointSummary s;
   std::vector<double> A, dyad, a2, tb;
+  double rounding = 0.0, log_rounding = 0.0;  // of the break-down times (below)
   for (const auto* r : runs) {
     const auto& p = r->parameters;
     s.dimension = p.dimension;
@@ -138,9 +139,12 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
     }
     a2.push_back(a.a2);
     if (a.window_collisions > 0) dyad.push_back(a.mean_dyad);
-    if (a.window.breakdown.detected) {
+    if (const Breakdown& b = a.window.breakdown; b.detected) {
       ++s.breakdowns;
-      tb.push_back(a.window.breakdown.time);
+      tb.push_back(b.time);
+      // Each time is known to within its sample interval (uniform: variance width²/12).
+      rounding += (b.time - b.previous) * (b.time - b.previous) / 12.0;
+      if (b.previous > 0) log_rounding += std::pow(std::log(b.time / b.previous), 2) / 12.0;
     }
   }
   s.A = mean_and_standard_error(A);
@@ -150,6 +154,13 @@ PointSummary summarize_point(const std::vector<const sim::RunResult*>& runs,
   std::vector<double> ln_tb;
   for (double t : tb) ln_tb.push_back(std::log(t));
   s.log_breakdown_time = mean_and_standard_error(ln_tb);
+  // Runs that broke down at the same sample scatter by nothing: their mean is still only known to
+  // the rounding of the sample grid, which floors its error (as the larger of the two).
+  if (s.breakdowns > 0) {
+    const double k = s.breakdowns;
+    s.breakdown_time.error = std::max(s.breakdown_time.error, std::sqrt(rounding) / k);
+    s.log_breakdown_time.error = std::max(s.log_breakdown_time.error, std::sqrt(log_rounding) / k);
+  }
   if (s.runs == 0) {  // nothing measured: not a value of 0 (tables print nan, runs = 0)
     const double nan = std::numeric_limits<double>::quiet_NaN();
     s.A = s.mean_dyad = s.a2 = Measurement{nan, nan};

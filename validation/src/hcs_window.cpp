@@ -61,6 +61,7 @@ Breakdown detect_breakdown(const std::vector<sim::Sample>& samples, const Window
     if (now && above(samples[i + 1])) {
       b.detected = true;
       b.time = samples[i].t;
+      b.previous = samples[i - 1].t;
       b.indicator = now;
       return b;
     }

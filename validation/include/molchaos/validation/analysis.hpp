@@ -54,6 +54,8 @@ struct PointSummary {
   Measurement mean_dyad;
   Measurement a2;
   int breakdowns = 0;  ///< runs in which the break-down was detected
+  /// t_b over those runs: mean ± the larger of the standard error and the sample grid's rounding
+  /// (each t_b is the first sample past the threshold, uniform within its interval).
   Measurement breakdown_time;
   /// ln t_b over the runs that broke down, mean ± standard error (the onset on the log axis of
   /// Fig. 3; ln of the mean t_b would sit above it, t_b being skewed).

@@ -61,6 +61,7 @@ struct WindowRule {
 struct Breakdown {
   bool detected = false;
   double time = 0.0;      ///< first of the two consecutive samples above threshold
+  double previous = 0.0;  ///< the sample before it: the threshold was crossed in (previous, time]
   std::string indicator;  ///< "density_mode" or "velocity_mode"
 };
 
