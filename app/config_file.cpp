@@ -4,11 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <ostream>
 #include <set>
@@ -216,15 +214,6 @@ bool takes_empty_list(const CLI::Option* op) {
         op->check_name(std::string(info.flag)))
       return true;
   return false;
-}
-
-// TOML's integers are signed 64-bit: an unsigned one beyond 2^63 − 1 (half of all seeds) is
-// written in quotes, a string of digits, and read back as the number.
-bool beyond_toml_integers(const std::string& text) {
-  std::uint64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size() &&
-         value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
 }
 
 std::string allowed_keys(CLI::App* cmd) {
@@ -488,7 +477,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       } catch (const CLI::OptionNotFound&) {
         takes_numbers = false;
       }
-      if (takes_numbers && !std::all_of(values.begin(), values.end(), beyond_toml_integers)) {
+      if (takes_numbers) {
         std::string bare;
         for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
         throw UsageError("--config", quoted->second + ": key '" + key + "': " + op->get_name() +
@@ -569,6 +558,7 @@ void write_config_toml(const sim::Parameters& p, std::ostream& out) {
     }
     double number = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+    // A seed beyond TOML's integers is written in quotes (read back as the number).
     const bool bare =
         text == "true" || text == "false" ||
         (ec == std::errc() && end == text.data() + text.size() && !beyond_toml_integers(text));

@@ -2,8 +2,11 @@
 #include "toml_reader.hpp"
 
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <istream>
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -132,7 +135,7 @@ std::string toml_scalar(const std::string& text, const std::string& where, const
     throw UsageError("--config", where + ": inline tables are not used; write key = value lines");
   if (text.front() == '"' || text.front() == '\'') {
     std::string value = toml_string(text, where);
-    quoted_number = quoted_number || reads_as_number(value);
+    quoted_number = quoted_number || (reads_as_number(value) && !beyond_toml_integers(value));
     return value;
   }
   if (text.front() == '[')
@@ -197,6 +200,13 @@ std::string strip_comment(const std::string& line) {
 }
 
 }  // namespace
+
+bool beyond_toml_integers(const std::string& text) {
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return ec == std::errc() && end == text.data() + text.size() &&
+         value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+}
 
 ConfigItems read_toml(std::istream& in, const std::string& path,
                       std::map<std::string, std::string>& quoted_numbers) {

@@ -42,14 +42,13 @@ void write_xyz_frame(const sim::RunResult& r, std::size_t index, std::ostream& o
     out << 'X';
     for (std::size_t a = 0; a < 3; ++a)
       out << ' ' << (a < d ? sim::round_trip_text(s.positions[i * d + a]) : "0");
+    std::string velocity;
     for (std::size_t a = 0; a < 3; ++a)
-      out << ' ' << (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
+      velocity += ' ' + (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
     // ASE takes velocities from `momenta` alone (its Atoms.get_velocities() is momenta over
     // masses, and species X has mass 1): with m = 1 they are the velocities again, so that a
     // frame read by ase.io.read moves; `vel` stays for OVITO and earlier readers.
-    for (std::size_t a = 0; a < 3; ++a)
-      out << ' ' << (a < d ? sim::round_trip_text(s.velocities[i * d + a]) : "0");
-    out << '\n';
+    out << velocity << velocity << '\n';
   }
 }
 
