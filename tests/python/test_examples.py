@@ -75,3 +75,65 @@ def test_fig4_from_csv_names_a_missing_or_wrong_table(tmp_path, arguments, messa
                          capture_output=True, text=True, timeout=60, cwd=tmp_path)
     assert out.returncode == 2 and "Traceback" not in out.stderr
     assert message in out.stderr
+
+
+def synthetic_sweeps(repeats, rng):
+    """Tables as `molchaos sweep` writes them, of two points whose A scatters by 0.1 over 4 runs
+    (0.2 per run): the first reports that error, the second half of it."""
+    import pandas as pd
+    tables = []
+    for _ in range(repeats):
+        tables.append(pd.DataFrame({
+            "density": [0.05, 0.05], "restitution": [0.8, 0.9], "method": ["edmd", "edmd"],
+            "randomize": ["none", "none"], "A": 20.0 + 0.1 * rng.standard_normal(2),
+            "A_err": [0.1, 0.05], "runs": [4, 4], "A_theory": [20.0, 20.0],
+            "A_theory_err": [1e-12, 1e-12]}))
+    return tables
+
+
+def test_error_bar_audit_finds_honest_bars_and_flags_halved_ones():
+    audit = load("error_bar_audit").audit
+    rng = np.random.default_rng(5)
+    reference = synthetic_sweeps(1, rng)[0].assign(runs=[400, 400], A_err=[0.01, 0.01])
+    rows = audit(synthetic_sweeps(200, rng), reference)
+    assert [(r["restitution"], r["column"]) for r in rows] == [(0.8, "A"), (0.9, "A")]
+    honest, halved = rows
+    # R's interval covers 1 for the honest bars (this seed; 95 % of seeds) and excludes it far
+    # for the halved ones; Q is exact here: the reference's 0.01 · √400 = 0.2 per run over the
+    # repetitions' 4 runs is 0.1.
+    assert honest["R_low"] < 1.0 < honest["R_high"] and honest["p"] > 0.05
+    assert halved["R_low"] > 1.7 and halved["p"] < 1e-10
+    assert honest["Q"] == pytest.approx(1.0, rel=1e-12)
+    assert halved["Q"] == pytest.approx(2.0, rel=1e-12)
+    assert honest["Q_err"] == pytest.approx(1.0 / np.sqrt(2 * 399), rel=1e-12)
+
+
+def test_error_bar_audit_runs_staged_sweeps_against_a_reference(molchaos_bin, tmp_path):
+    out = tmp_path / "audit.csv"
+    rows = load("error_bar_audit").main(
+        ["--particles", "100", "--restitution", "0.8", "--seeds", "2", "--target-error", "0.2",
+         "--threads", "2", "--out", str(tmp_path / "ignored.csv")],
+        repeats=3, reference_seeds=4, binary=molchaos_bin, out=str(out))
+    assert {r["column"] for r in rows} == {"A", "a2", "mean_dyad"}
+    assert all(r["K"] == 3 and np.isfinite(r["R"]) and np.isfinite(r["Q"]) for r in rows)
+    assert not (tmp_path / "ignored.csv").exists()
+    assert out.read_text().startswith("density,restitution,method,randomize,column,K,")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--repeats", "2"], "argument --repeats: must be a whole number >= 3, got '2'"),
+    (["--reference-seeds", "1"], "argument --reference-seeds: must be a whole number >= 2"),
+])
+def test_error_bar_audit_refuses_bad_arguments_naming_them(args, message):
+    out = subprocess.run([sys.executable, os.path.join(EXAMPLES, "error_bar_audit.py"), *args],
+                         capture_output=True, text=True, timeout=60)
+    assert out.returncode == 2 and message in out.stderr and "Traceback" not in out.stderr
+
+
+def test_error_bar_audit_passes_on_the_sweeps_own_error(molchaos_bin):
+    env = dict(os.environ, MOLCHAOS_BIN=molchaos_bin)
+    out = subprocess.run([sys.executable, os.path.join(EXAMPLES, "error_bar_audit.py"),
+                          "--repeats", "3", "--", "--restitution", "2"],
+                         capture_output=True, text=True, timeout=60, env=env)
+    assert out.returncode == 1 and "Traceback" not in out.stderr
+    assert out.stderr.startswith("error_bar_audit: ") and "restitution" in out.stderr
