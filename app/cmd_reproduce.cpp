@@ -37,6 +37,7 @@ struct ReproduceCliOptions {
   std::string cache;
   bool quick = false;
   int seeds = 0;
+  std::uint64_t base_seed = validation::ReproduceConfig{}.base_seed;
   int threads = 0;
   bool no_figures = false;
   bool relax_each_run = false;
@@ -140,12 +141,14 @@ void note_figures_of_other_runs(const std::string& out, const std::vector<std::s
 
 // The command line as the report names it: the options that change what the report says. --out,
 // --cache, --threads, --quiet and --relax-each-run change where the files go and how fast they
-// come, not their content, so the same options give the same report byte for byte; a --seeds
-// equal to the default is left out, as the tables' own re-runs (--config) give it.
+// come, not their content, so the same options give the same report byte for byte; a --seeds or
+// --base-seed equal to the default is left out, as the tables' own re-runs (--config) give it.
 std::string report_command(const ReproduceCliOptions& o, int default_seeds) {
   std::string command = "molchaos reproduce";
   if (o.quick) command += " --quick";
   if (o.seeds > 0 && o.seeds != default_seeds) command += fmt::format(" --seeds {}", o.seeds);
+  if (o.base_seed != validation::ReproduceConfig{}.base_seed)
+    command += fmt::format(" --base-seed {}", o.base_seed);
   if (o.no_figures) command += " --no-figures";
   return command;
 }
@@ -199,6 +202,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
                      : validation::ReproduceConfig::paper_scale();
   const int default_seeds = cfg.seeds;
   if (o.seeds > 0) cfg.seeds = o.seeds;
+  cfg.base_seed = o.base_seed;
   if (o.relax_each_run) sim::share_relaxed_states(false);
   // Both folders are created, and a file written in each, before any run: permissions alone do
   // not show /proc or a read-only mount (and root passes them). The cache first, so that a
@@ -283,6 +287,11 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--quick", o->quick, "a first look in seconds (N = 1000, 3 restitutions, 3 seeds)");
   cmd->add_option("--seeds", o->seeds, "seeds per point (default: 8, quick 3)")
       ->transform(integer_in(1, 10000));
+  cmd->add_option("--base-seed", o->base_seed,
+                  "base seed: a run's seed is a hash of it and the run's index; the studies "
+                  "with bases of their own have them shifted by base seed - 1")
+      ->transform(unsigned_integer())
+      ->capture_default_str();
   CLI::Option* threads = cmd->add_option("--threads", o->threads, "worker threads (0: all cores)")
                              ->transform(integer_in(0, 1024));
   cmd->add_flag("--no-figures", o->no_figures, "skip rendering");

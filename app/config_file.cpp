@@ -439,8 +439,9 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     throw UsageError("--config", path + ": a table of molchaos " + writer + ", which " +
                                      cmd->get_name() + " does not read; `molchaos " + writer +
                                      " --config " + path + "` repeats it");
-  // The tables of reproduce describe the study beyond its options: all of it follows from the two
-  // they name, quick and seeds, which are required.
+  // The tables of reproduce describe the study beyond its options: all of it follows from the
+  // three they name, quick and seeds, which are required, and base_seed (1 where a table of an
+  // earlier version does not name it).
   const bool study_table = result_file && cmd->get_name() == "reproduce";
   for (const char* key : {"quick", "seeds"})
     if (study_table && std::none_of(items.begin(), items.end(),

@@ -229,7 +229,7 @@ std::string gas_field_csv(const GasFieldStudy& s) {
   std::string out = fmt::format(
       "# the original and the randomized gases through the break-down of the HCS, d = 2\n"
       "# particles = {}\n# density = {}\n# restitution = {}\n# runs = {}\n# box = {:.6g}\n"
-      "# cells = {}\n# shells = |m|^2 <= {} (k = {:.6g})\n# base_seed = {}\n"
+      "# cells = {}\n# shells = |m|^2 <= {} (k = {:.6g})\n# runs seeded from base seed {}\n"
       "# S_perp, S: mean over the shells' wavevectors; flow_fraction = (T_flow - noise)/T; "
       "density_contrast = var(N_cell)/mean(N_cell); errors: standard error over the runs\n",
       s.spec.particles, s.spec.density, s.spec.restitution, s.spec.runs, s.box, s.spec.cells,

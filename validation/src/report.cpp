@@ -26,7 +26,8 @@ void write_file_atomically(const std::string& path, const std::string& text) {
 }
 
 std::string rerun_lines(const ReproduceConfig& config) {
-  return fmt::format("# quick = {}\n# seeds = {}\n", config.quick, config.seeds);
+  return fmt::format("# quick = {}\n# seeds = {}\n# base_seed = {}\n", config.quick, config.seeds,
+                     config.base_seed);
 }
 
 std::string after_title(std::string csv, const std::string& lines) {
@@ -40,8 +41,7 @@ std::string header_lines(const ReproduceResults& r) {
   const auto& c = r.config;
   std::string s = fmt::format("# molchaos reproduce ({})\n{}# version = {}\n",
                               c.quick ? "quick" : "paper scale", rerun_lines(c), r.version);
-  s += fmt::format("# dimension = 2\n# particles = {}\n# base_seed = {}\n", c.particles,
-                   c.base_seed);
+  s += fmt::format("# dimension = 2\n# particles = {}\n", c.particles);
   s += fmt::format(
       "# t_end_in_tau0 = {}\n# samples_per_decade = {}\n# relax_collisions_per_particle = {}\n",
       c.t_end_in_tau0, r.fig4_spec.samples_per_decade, r.fig4_spec.relax_collisions_per_particle);

@@ -24,19 +24,31 @@ constexpr double k_early_end = 3.0;
 
 }  // namespace
 
+BreakdownSpec breakdown_spec(const ReproduceConfig& cfg, int dimension) {
+  BreakdownSpec s = dimension == 3 ? BreakdownSpec::three_dimensional() : BreakdownSpec{};
+  s.base_seed = cfg.study_seed(s.base_seed);
+  return s;
+}
+
+FlowEnergySpec flow_energy_spec(const ReproduceConfig& cfg) {
+  FlowEnergySpec s;
+  s.densities = cfg.densities;
+  s.base_seed = cfg.study_seed(s.base_seed);
+  return s;
+}
+
 void run_breakdown_studies(ReproduceResults& R) {
   // Both need the paper's box (N = 5000) and runs to ln t = 8 or ~110 collisions per particle:
   // about a minute of CPU, so the quick look leaves them out.
   if (R.config.quick) return;
-  R.breakdown = breakdown_study({}, &R.breakdown_curves);
-  R.breakdown_3d = breakdown_study(BreakdownSpec::three_dimensional(), &R.breakdown_curves_3d);
+  R.breakdown = breakdown_study(breakdown_spec(R.config, 2), &R.breakdown_curves);
+  R.breakdown_3d = breakdown_study(breakdown_spec(R.config, 3), &R.breakdown_curves_3d);
   GasFieldSpec spec;
   spec.density = R.config.fig3_density;
   spec.restitution = R.config.fig3_restitution;
+  spec.base_seed = R.config.study_seed(spec.base_seed);
   R.gas_fields = gas_field_study(spec);
-  FlowEnergySpec flow;
-  flow.densities = R.config.densities;
-  R.flow_energy = flow_energy_study(flow);
+  R.flow_energy = flow_energy_study(flow_energy_spec(R.config));
 }
 
 // The shuffles exchange the colliders' velocities with those of random particles, so no velocity
@@ -206,7 +218,7 @@ Claim finding_flow_energy_share(const ReproduceResults& R) {
         "flow's share of T over t ∈ [τ0, 4τ0]: f = {:.4f} ± {:.4f} (cells of {} per side: flow "
         "and velocity correlations within a cell; noise subtracted); A errors combined as "
         "independent",
-        p.flow_fraction.value, p.flow_fraction.error, FlowEnergySpec{}.cells);
+        p.flow_fraction.value, p.flow_fraction.error, flow_energy_spec(R.config).cells);
     c.rows.push_back(row);
   }
   // One test over all points, each difference in SE taken as normal (its error combines two
@@ -244,7 +256,8 @@ std::string spec_header(const BreakdownSpec& spec) {
 std::string linear_hydrodynamics_csv(const ReproduceResults& R) {
   std::string out =
       "# break-down of the HCS: linear hydrodynamics (no free parameter) against simulation\n" +
-      spec_header(BreakdownSpec{}) + spec_header(BreakdownSpec::three_dimensional()) +
+      spec_header(steps::breakdown_spec(R.config, 2)) +
+      spec_header(steps::breakdown_spec(R.config, 3)) +
       "# measured: run mean, error: jackknife standard error over the runs\n"
       "d,quantity,predicted,measured,error,difference_percent,difference_in_se,note\n";
   for (const auto* rows : {&R.breakdown, &R.breakdown_3d})
@@ -291,7 +304,7 @@ void write_breakdown_tables(const ReproduceResults& R, const std::string& direct
   }
   if (!R.gas_fields.series.empty()) write("breakdown_gases.csv", gas_field_csv(R.gas_fields));
   if (!R.flow_energy.empty()) {
-    const FlowEnergySpec spec;
+    const FlowEnergySpec spec = steps::flow_energy_spec(R.config);
     std::string csv = fmt::format(
         "# flow energy's share of T in the original gas, d = 2, N = {}, {} runs, snapshots at "
         "t/tau0 = {} (kinetic-theory tau0), cells {} per side, base_seed = {}\n"

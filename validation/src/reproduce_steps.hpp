@@ -78,6 +78,10 @@ void run_studies(ReproduceResults& results, const SweepOptions& sweep);
 // --- the break-down of the homogeneous cooling state (reproduce_breakdown.cpp) ---------------
 /// At paper scale: the break-down study and the three gases side by side, into `results`.
 void run_breakdown_studies(ReproduceResults& results);
+/// The break-down study (d = 2 or 3) and the flow-energy study as the reproduction runs them:
+/// their own settings, their base seeds shifted with the reproduction's (study_seed).
+BreakdownSpec breakdown_spec(const ReproduceConfig& cfg, int dimension);
+FlowEnergySpec flow_energy_spec(const ReproduceConfig& cfg);
 Claim claim_shuffles_suppress_vortices(const ReproduceResults& results);
 Claim claim_randomized_stays_homogeneous(const ReproduceResults& results);
 Claim finding_onset_from_linear_theory(const ReproduceResults& results);

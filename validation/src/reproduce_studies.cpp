@@ -13,9 +13,10 @@
 namespace molchaos::validation::steps {
 
 void run_studies(ReproduceResults& R, const SweepOptions& sweep) {
-  R.correlations = run_correlation_study(
-      R.config.quick ? CorrelationStudyConfig::quick_look() : CorrelationStudyConfig::paper_scale(),
-      sweep);
+  CorrelationStudyConfig correlations =
+      R.config.quick ? CorrelationStudyConfig::quick_look() : CorrelationStudyConfig::paper_scale();
+  correlations.base_seed = R.config.study_seed(correlations.base_seed);
+  R.correlations = run_correlation_study(correlations, sweep);
   R.failed_runs += R.correlations.failed_runs;
   run_breakdown_studies(R);
 }

@@ -14,7 +14,8 @@ namespace molchaos::validation {
 void write_file_atomically(const std::string& path, const std::string& text);
 
 /// The '#' lines of the options that re-run a table of the reproduction, which `reproduce
-/// --config TABLE` reads back: quick and seeds, the two options that change what the tables hold.
+/// --config TABLE` reads back: quick, seeds and base_seed, the options that change what the tables
+/// hold.
 std::string rerun_lines(const ReproduceConfig& config);
 
 /// csv with `lines` put after its title (first) line.
