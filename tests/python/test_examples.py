@@ -137,3 +137,13 @@ def test_error_bar_audit_passes_on_the_sweeps_own_error(molchaos_bin):
                          capture_output=True, text=True, timeout=60, env=env)
     assert out.returncode == 1 and "Traceback" not in out.stderr
     assert out.stderr.startswith("error_bar_audit: ") and "restitution" in out.stderr
+
+
+def test_error_bar_audit_takes_the_table_of_a_sweep_whose_runs_failed(molchaos_bin):
+    # Such a sweep exits with 1 but writes its table (its points count the runs that succeeded):
+    # the audit took the exit status for a failure of the whole sweep. Here every run ends before
+    # its transient, so no column has values to audit.
+    rows = load("error_bar_audit").main(
+        ["--particles", "100", "--restitution", "0.8", "--seeds", "2", "--t-end-tau0", "0.01"],
+        repeats=3, binary=molchaos_bin)
+    assert rows == []
