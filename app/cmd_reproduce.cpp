@@ -246,6 +246,8 @@ void run_reproduce(const ReproduceCliOptions& o) {
   stop_if_interrupted("after the figures", staged);
   validation::write_file_atomically((std::filesystem::path(dir) / "fig4_A_of_eps.csv").string(),
                                     validation::fig4_csv(results));
+  validation::write_file_atomically((std::filesystem::path(dir) / "fig4_fits.csv").string(),
+                                    validation::fig4_fits_csv(results));
   validation::write_file_atomically((std::filesystem::path(dir) / "a2_of_eps.csv").string(),
                                     validation::a2_csv(results));
   validation::write_correlation_tables(results.correlations, dir,

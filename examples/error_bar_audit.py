@@ -6,8 +6,10 @@ errors the sweep reported for them.
         --particles 1000 --restitution 0.7,0.9 --randomize none,flux --seeds 6
 
 Everything after `--` is passed to `molchaos sweep` (its own --base-seed, --cache and --out are
-the audit's). For every column X with an error column X_err (A, a2, mean_dyad, collision_ratio,
-breakdown_time):
+the audit's). With --reproduce TABLE it is passed to `molchaos reproduce` instead, and the audit
+reads that table of each reproduction (e.g. fig4_fits.csv, the slopes of Fig. 4). For every
+column X with an error column X_err (A, a2, mean_dyad, collision_ratio, breakdown_time of a
+sweep), and for every further error of X (X_err_..., such as slope_err_over_seeds):
 
 - R = (standard deviation of the K values of X) / (rms of their K reported errors). Honest error
   bars give R = 1; R > 1 means they are too small. The 95 % interval and the two-sided p value
@@ -35,11 +37,13 @@ from scipy import stats
 
 import molchaos
 
-POINT = ["density", "restitution", "method", "randomize"]
+# The columns that name a row (those a table has).
+KEYS = ["dimension", "density", "restitution", "method", "randomize", "source"]
 # The count behind a column's error: the runs of a point, or the runs that broke down.
 RUNS_OF = {"breakdown_time": "breakdowns"}
 # Options of `molchaos sweep` the audit sets itself, and those a reference sweep leaves out.
 AUDIT_OWNS = ["--base-seed", "--cache", "--out", "--quiet"]
+FLAGS = ["--quiet", "--no-figures"]  # options without a value
 STAGING = ["--target-error", "--max-seeds", "--seeds"]
 
 
@@ -50,19 +54,25 @@ def without(args, options):
         if skip:
             skip = False
         elif a in options:
-            skip = a != "--quiet"
+            skip = a not in FLAGS
         elif a.split("=", 1)[0] not in options:
             out.append(a)
     return out
 
 
-def run_sweep(binary, args, base_seed, staged):
-    """One sweep's table, run with `base_seed`; a staged sweep in a temporary cache of its own."""
+def run_sweep(binary, args, base_seed, staged, reproduce_table=None):
+    """One sweep's table, run with `base_seed`; a staged sweep in a temporary cache of its own.
+    With reproduce_table: that table of a reproduction."""
     with tempfile.TemporaryDirectory(prefix="molchaos-audit-") as tmp:
-        out = os.path.join(tmp, "sweep.csv")
-        cache = os.path.join(tmp, "cache") if staged else ""
-        command = [binary, "sweep", *args, "--base-seed", str(base_seed), "--cache", cache,
-                   "--out", out, "--quiet"]
+        if reproduce_table:
+            out = os.path.join(tmp, "out", reproduce_table)
+            command = [binary, "reproduce", *args, "--base-seed", str(base_seed), "--out",
+                       os.path.join(tmp, "out"), "--no-figures", "--quiet"]
+        else:
+            out = os.path.join(tmp, "sweep.csv")
+            cache = os.path.join(tmp, "cache") if staged else ""
+            command = [binary, "sweep", *args, "--base-seed", str(base_seed), "--cache", cache,
+                       "--out", out, "--quiet"]
         done = subprocess.run(command, capture_output=True, text=True)
         # A sweep some of whose runs failed (a gas that clustered before its fit window) still
         # writes its table, whose points count the runs that succeeded, and exits with 1.
@@ -73,8 +83,8 @@ def run_sweep(binary, args, base_seed, staged):
         return table
 
 
-def point_key(row):
-    return tuple(row[c] for c in POINT)
+def point_key(row, keys):
+    return tuple(row[c] for c in keys)
 
 
 def audit(tables, reference=None):
@@ -82,17 +92,21 @@ def audit(tables, reference=None):
     the repetitions (and the reference table, if any). Each row: the point, the column, K, R with
     its 95 % interval and p, and Q with its relative error (nan without a reference)."""
     first = tables[0]
-    columns = [c for c in first.columns if c + "_err" in first.columns and c != "A_theory"]
-    by_point = [{point_key(r): r for _, r in t.iterrows()} for t in tables]
-    ref = {point_key(r): r for _, r in reference.iterrows()} if reference is not None else {}
+    keys = [c for c in KEYS if c in first.columns]
+    # (X, its error column): X_err, and any further X_err_... (another estimate of X's error).
+    pairs = [(c, e) for c in first.columns for e in first.columns
+             if (e == c + "_err" or e.startswith(c + "_err_")) and c != "A_theory"]
+    has_runs = "runs" in first.columns
+    by_point = [{point_key(r, keys): r for _, r in t.iterrows()} for t in tables]
+    ref = {point_key(r, keys): r for _, r in reference.iterrows()} if reference is not None else {}
     rows = []
     for key in by_point[0]:
         if any(key not in t for t in by_point):
             raise ValueError(f"point {key} is not in every repetition's table")
-        for column in columns:
+        for column, error_column in pairs:
             values = [t[key][column] for t in by_point]
-            errors = [t[key][column + "_err"] for t in by_point]
-            runs = [t[key][RUNS_OF.get(column, "runs")] for t in by_point]
+            errors = [t[key][error_column] for t in by_point]
+            runs = [t[key][RUNS_OF.get(column, "runs")] if has_runs else 1 for t in by_point]
             values, errors, runs = map(np.asarray, (values, errors, runs))
             usable = np.isfinite(values) & np.isfinite(errors) & (errors > 0)
             values, errors, runs = values[usable], errors[usable], runs[usable]
@@ -107,33 +121,37 @@ def audit(tables, reference=None):
             low = r * math.sqrt(dof / stats.chi2.ppf(0.975, dof))
             high = r * math.sqrt(dof / stats.chi2.ppf(0.025, dof))
             q = q_error = math.nan
-            if key in ref and column not in RUNS_OF:
+            if key in ref and column not in RUNS_OF and error_column == column + "_err":
                 rr = ref[key]
                 m = rr[RUNS_OF.get(column, "runs")]
                 if m >= 2 and np.isfinite(rr[column + "_err"]):
                     per_run = rr[column + "_err"] * math.sqrt(m)
                     q = math.sqrt(np.mean(per_run**2 / runs)) / rms_error
                     q_error = q / math.sqrt(2.0 * (m - 1))
-            rows.append(dict(zip(POINT, key), column=column, K=k, runs=float(np.mean(runs)), R=r,
+            rows.append(dict(zip(keys, key), column=column, error=error_column, K=k,
+                             runs=float(np.mean(runs)) if has_runs else math.nan, R=r,
                              R_low=low, R_high=high, p=p, Q=q, Q_err=q_error))
     return rows
 
 
 def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary=None,
-         out=None, progress=False):
+         out=None, progress=False, reproduce_table=None):
     if isinstance(repeats, bool) or not isinstance(repeats, int) or repeats < 3:
         raise ValueError(f"repeats: must be a whole number >= 3, got {repeats!r}")
     if isinstance(reference_seeds, bool) or not isinstance(reference_seeds, int) or \
             reference_seeds == 1 or reference_seeds < 0:
         raise ValueError(f"reference_seeds: must be 0 (none) or a whole number >= 2, "
                          f"got {reference_seeds!r}")
+    if reproduce_table and reference_seeds:
+        raise ValueError("reference_seeds: a reference is a sweep's; give none with a "
+                         "reproduction's table")
     binary = binary or os.environ.get("MOLCHAOS_BIN") or shutil.which("molchaos") or \
         "build/molchaos"
-    args = without(list(sweep_args), AUDIT_OWNS)
+    args = without(list(sweep_args), AUDIT_OWNS + (["--no-figures"] if reproduce_table else []))
     staged = any(a.split("=", 1)[0] == "--target-error" for a in args)
     tables = []
     for k in range(repeats):
-        tables.append(run_sweep(binary, args, first_base_seed + k, staged))
+        tables.append(run_sweep(binary, args, first_base_seed + k, staged, reproduce_table))
         if progress:
             print(f"\rrepetition {k + 1}/{repeats}", end="", file=sys.stderr, flush=True)
     if progress:
@@ -147,20 +165,24 @@ def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary
     if out:
         import csv
         with open(out, "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else POINT)
+            writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else ["column"])
             writer.writeheader()
             writer.writerows(rows)
     return rows
 
 
 def print_rows(rows):
-    print(f"{'density':>8} {'eps':>6} {'method':>6} {'mode':>6} {'column':>16} {'K':>4} "
-          f"{'runs':>6} {'R':>6} {'95% interval':>14} {'p':>7} {'Q':>12}")
+    if not rows:
+        print("no column with errors to audit (too few repetitions with values)")
+        return
+    keys = [c for c in KEYS if c in rows[0]]
+    print(" ".join(f"{c:>10}" for c in keys) + f" {'column':>16} {'error':>22} {'K':>4} {'runs':>6} "
+          f"{'R':>6} {'95% interval':>14} {'p':>8} {'Q':>12}")
     for r in rows:
         q = f"{r['Q']:.3f}±{r['Q_err']:.3f}" if np.isfinite(r["Q"]) else "-"
-        print(f"{r['density']:>8} {r['restitution']:>6} {r['method']:>6} {r['randomize']:>6} "
-              f"{r['column']:>16} {r['K']:>4} {r['runs']:>6.1f} {r['R']:>6.3f} "
-              f"[{r['R_low']:.2f}, {r['R_high']:.2f}] {r['p']:>7.3g} {q:>12}")
+        print(" ".join(f"{str(r[c]):>10}" for c in keys) + f" {r['column']:>16} "
+              f"{r['error']:>22} {r['K']:>4} {r['runs']:>6.1f} {r['R']:>6.3f} "
+              f"[{r['R_low']:.2f}, {r['R_high']:.2f}] {r['p']:>8.3g} {q:>12}")
 
 
 def whole_number(minimum):
@@ -184,6 +206,9 @@ if __name__ == "__main__":
                         help="seeds M of a reference sweep for Q (>= 2; default: none)")
     parser.add_argument("--first-base-seed", type=whole_number(0), default=1000,
                         help="base seed of the first repetition (default 1000)")
+    parser.add_argument("--reproduce", metavar="TABLE", default=None,
+                        help="repeat `molchaos reproduce` instead and audit this table of it "
+                             "(e.g. fig4_fits.csv)")
     parser.add_argument("--molchaos", default=None,
                         help="the molchaos program (default: $MOLCHAOS_BIN, then PATH, then "
                              "build/molchaos)")
@@ -194,7 +219,7 @@ if __name__ == "__main__":
     sweep_args = a.sweep_args[1:] if a.sweep_args[:1] == ["--"] else a.sweep_args
     try:
         result = main(sweep_args, a.repeats, a.reference_seeds, a.first_base_seed, a.molchaos,
-                      a.out, progress=sys.stderr.isatty())
+                      a.out, progress=sys.stderr.isatty(), reproduce_table=a.reproduce)
     except (RuntimeError, ValueError) as e:
         print(f"error_bar_audit: {e}", file=sys.stderr)
         sys.exit(1)

@@ -117,7 +117,19 @@ def test_error_bar_audit_runs_staged_sweeps_against_a_reference(molchaos_bin, tm
     assert {r["column"] for r in rows} == {"A", "a2", "mean_dyad"}
     assert all(r["K"] == 3 and np.isfinite(r["R"]) and np.isfinite(r["Q"]) for r in rows)
     assert not (tmp_path / "ignored.csv").exists()
-    assert out.read_text().startswith("density,restitution,method,randomize,column,K,")
+    assert out.read_text().startswith("density,restitution,method,randomize,column,error,K,")
+
+
+def test_error_bar_audit_reads_the_fits_of_repeated_reproductions(molchaos_bin):
+    rows = load("error_bar_audit").main(["--quick", "--seeds", "2", "--threads", "2"], repeats=3,
+                                        binary=molchaos_bin, reproduce_table="fig4_fits.csv")
+    # Every gas of both densities: intercept and slope with the fit's errors, and the slope with
+    # the jackknife's over seeds.
+    assert len(rows) == 2 * 4 * 3
+    assert {(r["column"], r["error"]) for r in rows} == {
+        ("intercept", "intercept_err"), ("slope", "slope_err"),
+        ("slope", "slope_err_over_seeds")}
+    assert all(r["K"] == 3 and np.isfinite(r["R"]) for r in rows)
 
 
 @pytest.mark.parametrize("args, message", [

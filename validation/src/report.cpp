@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include "molchaos/sim/atomic_file.hpp"
@@ -126,6 +127,25 @@ std::string fig4_csv(const ReproduceResults& r) {
                      error_of_runs(m.a2.error, m.runs), m.mean_dyad.value,
                      error_of_runs(m.mean_dyad.error, m.runs), m.breakdowns);
   }
+  return s;
+}
+
+std::string fig4_fits_csv(const ReproduceResults& r) {
+  std::string s = header_lines(r);
+  s += "# A = intercept + slope * eps by weighted least squares over the points of a gas, errors "
+       "scaled by sqrt(chi2/dof) where it exceeds 1; slope_err_over_seeds: the slope's standard "
+       "error by the jackknife over seeds, scaled likewise (nan with one seed)\n";
+  s += "density,randomize,intercept,intercept_err,slope,slope_err,chi2_per_dof,points,slope_err_"
+       "over_seeds\n";
+  for (const auto& panel : r.fig4.panels)
+    for (const auto& series : panel.series)
+      if (series.fit)
+        s += fmt::format(
+            "{},{},{:.10g},{:.4g},{:.10g},{:.4g},{:.4g},{},{:.4g}\n", panel.density, series.mode,
+            series.fit->intercept, series.fit->intercept_error, series.fit->slope,
+            series.fit->slope_error, series.fit->chi2_per_dof, series.points.size(),
+            series.slope_error_over_seeds > 0 ? series.slope_error_over_seeds
+                                              : std::numeric_limits<double>::quiet_NaN());
   return s;
 }
 

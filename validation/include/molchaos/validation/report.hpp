@@ -26,6 +26,11 @@ std::string after_title(std::string csv, const std::string& lines);
 /// (none, paper, flux) or `dsmc` for the DSMC gas.
 std::string fig4_csv(const ReproduceResults& results);
 
+/// The straight-line fits A = intercept + slope·ε of Fig. 4, one row per gas: columns
+/// density,randomize,intercept,intercept_err,slope,slope_err,chi2_per_dof,points,
+/// slope_err_over_seeds (the jackknife over seeds; nan with one seed per point).
+std::string fig4_fits_csv(const ReproduceResults& results);
+
 /// a2(ε) of every gas and of the Sonine theory, one row per point: columns
 /// dimension,density,restitution,source,a2,a2_err; `source` is the gas (none, paper, flux, dsmc)
 /// or the theory (first_sonine, a2_a3).
