@@ -89,8 +89,9 @@ def point_key(row, keys):
 
 def audit(tables, reference=None):
     """The rows of the audit: one per state point and column with errors, from the K tables of
-    the repetitions (and the reference table, if any). Each row: the point, the column, K, R with
-    its 95 % interval and p, and Q with its relative error (nan without a reference)."""
+    the repetitions (and the reference table, if any). Each row: the point, the column and its
+    error column, K, R with its 95 % interval and p, and Q with its error (nan without a
+    reference)."""
     first = tables[0]
     keys = [c for c in KEYS if c in first.columns]
     # (X, its error column): X_err, and any further X_err_... (another estimate of X's error).
@@ -123,7 +124,7 @@ def audit(tables, reference=None):
             q = q_error = math.nan
             if key in ref and column not in RUNS_OF and error_column == column + "_err":
                 rr = ref[key]
-                m = rr[RUNS_OF.get(column, "runs")]
+                m = rr["runs"]
                 if m >= 2 and np.isfinite(rr[column + "_err"]):
                     per_run = rr[column + "_err"] * math.sqrt(m)
                     q = math.sqrt(np.mean(per_run**2 / runs)) / rms_error
