@@ -16,9 +16,9 @@ sweep), and for every further error of X (X_err_..., such as slope_err_over_seed
   treat (K − 1) R² as χ² with K − 1 degrees of freedom (normal results, exact errors).
 - With --reference-seeds M, one more sweep of the same points with M seeds and no --target-error
   gives each point's scatter per run, s; then Q = √(mean of s²/n) / (rms reported error), n the
-  runs of each repetition, compares the errors with what they should be far more precisely than R
-  (Q's own relative error is about 1/√(2(M − 1))). This is the check for staged sweeps
-  (--target-error), whose number of runs depends on their scatter.
+  runs of each repetition, compares the errors with what they should be more precisely than R
+  (Q's own relative error is about 1/√(2(M − 1)), R's 1/√(2(K − 1))). This is the check for
+  staged sweeps (--target-error), whose number of runs depends on their scatter.
 
 Each repetition's base seed is --first-base-seed + k (k = 0 … K − 1); a staged sweep gets a
 temporary cache of its own. The table is printed, and written as CSV with --out.
@@ -177,8 +177,8 @@ def print_rows(rows):
         print("no column with errors to audit (too few repetitions with values)")
         return
     keys = [c for c in KEYS if c in rows[0]]
-    print(" ".join(f"{c:>10}" for c in keys) + f" {'column':>16} {'error':>22} {'K':>4} {'runs':>6} "
-          f"{'R':>6} {'95% interval':>14} {'p':>8} {'Q':>12}")
+    print(" ".join(f"{c:>10}" for c in keys) + f" {'column':>16} {'error':>22} {'K':>4} "
+          f"{'runs':>6} {'R':>6} {'95% interval':>14} {'p':>8} {'Q':>12}")
     for r in rows:
         q = f"{r['Q']:.3f}±{r['Q_err']:.3f}" if np.isfinite(r["Q"]) else "-"
         print(" ".join(f"{str(r[c]):>10}" for c in keys) + f" {r['column']:>16} "
