@@ -24,7 +24,7 @@ const std::vector<double> k_restitutions{0.80, 0.82, 0.84, 0.86, 0.88,
                                          0.90, 0.92, 0.94, 0.96, 0.98};
 
 // Ten points of a gas whose A scatters per run by sigma(ε) (relative, A = 1): staged like
-// reproduce (8 seeds, then up to 4 stages), sized by `rule`. Returns per point the runs' values.
+// reproduce (8 seeds, then up to 5 stages), sized by `rule`. Returns per point the runs' values.
 using Rule = std::function<std::vector<int>(const std::vector<PointScatter>&)>;
 std::vector<std::vector<double>> staged_ensemble(const std::vector<double>& sigma, const Rule& rule,
                                                  std::mt19937_64& rng) {
@@ -34,7 +34,7 @@ std::vector<std::vector<double>> staged_ensemble(const std::vector<double>& sigm
     for (int i = 0; i < count; ++i) runs[k].push_back(1.0 + sigma[k] * normal(rng));
   };
   for (std::size_t k = 0; k < sigma.size(); ++k) add(k, 8);
-  for (int stage = 0; stage < 4; ++stage) {
+  for (int stage = 0; stage < 5; ++stage) {
     std::vector<PointScatter> gas;
     for (std::size_t k = 0; k < sigma.size(); ++k) {
       const auto& v = runs[k];

@@ -12,8 +12,10 @@
 
 namespace molchaos::validation {
 
-/// Further stages at most: each sizes from more runs than the one before.
-inline constexpr int k_target_stages = 4;
+/// Further stages at most: each sizes from more runs than the one before. A point that grows at
+/// most 4-fold per stage from a first stage of 3–8 seeds may reach its need (up to 192) only in
+/// the third or fourth; one stage more sizes its neighbours from the model its growth moved.
+inline constexpr int k_target_stages = 5;
 
 /// One list of point results and the ensemble they were summarized from, whose
 /// target_relative_error and max_seeds size its points (nothing is added when the target is 0). A
