@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "molchaos/sim/parameters.hpp"
+#include "molchaos/validation/stopping_correction.hpp"
 
 namespace molchaos::validation {
 namespace {
@@ -33,15 +34,34 @@ std::vector<Gas> gases_of(const StagedList& list) {
   return out;
 }
 
-// The ensembles of the points of one list that need more seeds, one per point.
-std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list) {
-  if (list.spec->target_relative_error <= 0.0) return {};
+// Each gas's staging (stopping_correction.hpp) as it goes: the seeds its points had before the
+// first further stage, and the factors its last sizing applied.
+std::vector<Staging> stagings_of(const StagedList& list) {
   SeedSizing sizing;
   sizing.target_relative_error = list.spec->target_relative_error;
   sizing.max_seeds = list.spec->max_seeds;
-  std::vector<EnsembleSpec> specs;
+  std::vector<Staging> out;
   for (const auto& gas : gases_of(list)) {
-    const std::vector<int> needed = seeds_needed(gas.scatter, sizing);
+    Staging& staging = out.emplace_back(Staging{{}, sizing, k_target_stages, {}});
+    for (const auto& p : gas.scatter) staging.first_seeds.push_back(p.seeds);
+  }
+  return out;
+}
+
+// The ensembles of the points of one list that need more seeds, one per point: sized for the SE
+// they will report, whose factors each gas's staging keeps for the next stage.
+std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list,
+                                                  std::vector<Staging>& stagings) {
+  if (list.spec->target_relative_error <= 0.0) return {};
+  std::vector<EnsembleSpec> specs;
+  const std::vector<Gas> gases = gases_of(list);
+  for (std::size_t g = 0; g < gases.size(); ++g) {
+    const Gas& gas = gases[g];
+    Staging& staging = stagings[g];
+    const std::vector<double> reported = reported_relative_scatter(gas.scatter);
+    staging.sizing_factors = stopping_correction(gas.scatter, reported, staging);
+    const std::vector<int> needed =
+        seeds_needed_for_factors(gas.scatter, staging.sizing_factors, staging.sizing);
     for (std::size_t k = 0; k < gas.members.size(); ++k) {
       if (needed[k] <= gas.scatter[k].seeds) continue;
       const auto& member = *gas.members[k];
@@ -57,16 +77,20 @@ std::vector<EnsembleSpec> ensembles_needing_seeds(const StagedList& list) {
   return specs;
 }
 
-// SE(A) of every point of a list grown to a target from reported_relative_scatter: the point's own
-// scatter decided when it stopped, and alone would leave its error bar short.
-void report_errors_of_grown_points(const StagedList& list) {
+// SE(A) of every point of a list grown to a target: the scatter from reported_relative_scatter (the
+// point's own scatter decided when it stopped, and alone would leave its error bar short), times
+// the factor that undoes what stopping leaves of that bias (stopping_correction.hpp).
+void report_errors_of_grown_points(const StagedList& list, const std::vector<Staging>& stagings) {
   if (list.spec->target_relative_error <= 0.0) return;
-  for (const auto& gas : gases_of(list)) {
-    const std::vector<double> scatter = reported_relative_scatter(gas.scatter);
+  const std::vector<Gas> gases = gases_of(list);
+  for (std::size_t g = 0; g < gases.size(); ++g) {
+    const Gas& gas = gases[g];
+    const std::vector<double> reported = reported_relative_scatter(gas.scatter);
+    const std::vector<double> factor = stopping_correction(gas.scatter, reported, stagings[g]);
     for (std::size_t k = 0; k < gas.members.size(); ++k) {
       auto& s = gas.members[k]->summary;
       if (gas.scatter[k].runs < 2) continue;
-      s.A.error = scatter[k] * s.A.value / std::sqrt(static_cast<double>(s.runs));
+      s.A.error = factor[k] * reported[k] * s.A.value / std::sqrt(static_cast<double>(s.runs));
     }
   }
 }
@@ -81,6 +105,8 @@ bool same_point(const PointResult& a, const PointResult& b) {
 std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
                                        const SweepOptions& sweep, const WindowRule& window) {
   std::vector<RunOutcome> failures;
+  std::vector<std::vector<Staging>> stagings;  // per list and gas
+  for (const auto& list : lists) stagings.push_back(stagings_of(list));
   for (int stage = 0; stage < k_target_stages; ++stage) {
     struct Extension {
       EnsembleSpec spec;
@@ -88,9 +114,9 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
       std::size_t runs = 0;  // its share of the stage's runs
     };
     std::vector<Extension> extensions;
-    for (const auto& list : lists)
-      for (auto& spec : ensembles_needing_seeds(list))
-        extensions.push_back({std::move(spec), list.points});
+    for (std::size_t l = 0; l < lists.size(); ++l)
+      for (auto& spec : ensembles_needing_seeds(lists[l], stagings[l]))
+        extensions.push_back({std::move(spec), lists[l].points});
     if (extensions.empty()) break;
     std::vector<sim::Parameters> runs;
     for (auto& x : extensions) {
@@ -114,7 +140,8 @@ std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
           if (same_point(p, fresh)) p = std::move(fresh);
     }
   }
-  for (const auto& list : lists) report_errors_of_grown_points(list);
+  for (std::size_t l = 0; l < lists.size(); ++l)
+    report_errors_of_grown_points(lists[l], stagings[l]);
   return failures;
 }
 

@@ -56,7 +56,8 @@ std::vector<int> seeds_needed(const std::vector<PointScatter>& gas, const SeedSi
 /// within about 1 % over a gas (single points within about ±10 %, on the large side where a point
 /// stays at min_runs), while a point whose runs are many and clearly steadier than the smooth model
 /// (a scatter that jumps with ε) keeps its own instead of the model's larger one. Points with fewer
-/// than 2 runs keep their own (0).
+/// than 2 runs keep their own (0). What single points keep of the bias, stopping_correction.hpp
+/// measures and undoes.
 std::vector<double> reported_relative_scatter(const std::vector<PointScatter>& gas);
 
 }  // namespace molchaos::validation

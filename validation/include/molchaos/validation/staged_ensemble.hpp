@@ -29,9 +29,10 @@ struct StagedList {
 /// grown point's result by the summary of all its seeds; stops early when no point needs more
 /// seeds. Then every point of a list with a target reports SE(A) from reported_relative_scatter
 /// (its own scatter, or its gas's model where that is larger), since its own decided when it
-/// stopped. Returns the outcomes of the runs that failed in these stages (the caller's record of
-/// failures). The seeds of earlier stages are only read back when `sweep` has a cache; without one
-/// they run again.
+/// stopped, times the factor of stopping_correction.hpp for what stopping still leaves short.
+/// Returns the outcomes of the runs that failed in these stages (the caller's record of failures).
+/// The seeds of earlier stages are only read back when `sweep` has a cache; without one they run
+/// again.
 std::vector<RunOutcome> grow_to_target(const std::vector<StagedList>& lists,
                                        const SweepOptions& sweep, const WindowRule& window);
 
