@@ -19,6 +19,11 @@ sweep), and for every further error of X (X_err_..., such as slope_err_over_seed
   runs of each repetition, compares the errors with what they should be more precisely than R
   (Q's own relative error is about 1/√(2(M − 1)), R's 1/√(2(K − 1))). This is the check for
   staged sweeps (--target-error), whose number of runs depends on their scatter.
+- kurtosis: the excess kurtosis κ of one run's value, where every repetition has the same runs n:
+  from how the repetitions' scatter per run, s² = n·error², scatters (Var(s²)/σ⁴ = 2/(n − 1) +
+  κ/n for any distribution). Q's error allows for it (a run with heavy tails makes the reference's
+  s uncertain beyond the normal 1/√(2(M − 1))); R's interval needs no such allowance (measured by
+  the tests: an outlier moves a repetition's mean and its error together).
 
 Each repetition's base seed is --first-base-seed + k (k = 0 … K − 1); a staged sweep gets a
 temporary cache of its own. The table is printed, and written as CSV with --out.
@@ -114,25 +119,58 @@ def audit(tables, reference=None):
             k = len(values)
             if k < 3:
                 continue
-            rms_error = math.sqrt(np.mean(errors**2))
-            r = np.std(values, ddof=1) / rms_error
-            dof = k - 1
-            chi2 = dof * r * r
-            p = 2.0 * min(stats.chi2.cdf(chi2, dof), stats.chi2.sf(chi2, dof))
-            low = r * math.sqrt(dof / stats.chi2.ppf(0.975, dof))
-            high = r * math.sqrt(dof / stats.chi2.ppf(0.025, dof))
+            r, low, high, p = r_statistics(values, errors)
+            kurtosis = per_run_kurtosis(errors, runs) if has_runs else math.nan
             q = q_error = math.nan
             if key in ref and column not in RUNS_OF and error_column == column + "_err":
                 rr = ref[key]
                 m = rr["runs"]
                 if m >= 2 and np.isfinite(rr[column + "_err"]):
-                    per_run = rr[column + "_err"] * math.sqrt(m)
-                    q = math.sqrt(np.mean(per_run**2 / runs)) / rms_error
-                    q_error = q / math.sqrt(2.0 * (m - 1))
+                    q, q_error = q_statistics(rr[column + "_err"] * math.sqrt(m), m, errors, runs,
+                                              kurtosis)
             rows.append(dict(zip(keys, key), column=column, error=error_column, K=k,
                              runs=float(np.mean(runs)) if has_runs else math.nan, R=r,
-                             R_low=low, R_high=high, p=p, Q=q, Q_err=q_error))
+                             R_low=low, R_high=high, p=p, kurtosis=kurtosis, Q=q, Q_err=q_error))
     return rows
+
+
+def r_statistics(values, errors):
+    """R = (standard deviation of the K values) / (rms of their errors), its 95 % interval and the
+    two-sided p of R = 1, from (K − 1) R² as χ² with K − 1 degrees of freedom."""
+    dof = len(values) - 1
+    r = np.std(values, ddof=1) / math.sqrt(np.mean(np.square(errors)))
+    chi2 = dof * r * r
+    p = 2.0 * min(stats.chi2.cdf(chi2, dof), stats.chi2.sf(chi2, dof))
+    low = r * math.sqrt(dof / stats.chi2.ppf(0.975, dof))
+    high = r * math.sqrt(dof / stats.chi2.ppf(0.025, dof))
+    return r, low, high, p
+
+
+def per_run_kurtosis(errors, runs):
+    """The excess kurtosis of one run's value from the K repetitions' errors, each over the same
+    n >= 2 runs: s² = n·error² has Var(s²)/σ⁴ = 2/(n − 1) + κ/n. nan where the repetitions have
+    different runs (a staged sweep's runs depend on their scatter)."""
+    runs = np.asarray(runs, dtype=float)
+    if len(runs) < 3 or runs[0] < 2 or np.any(runs != runs[0]):
+        return math.nan
+    n = runs[0]
+    s2 = n * np.square(errors)
+    return n * (np.var(s2, ddof=1) / np.mean(s2) ** 2 - 2.0 / (n - 1.0))
+
+
+def q_statistics(per_run, m, errors, runs, kurtosis):
+    """Q = √(mean of per_run²/n) / (rms error), per_run the reference's scatter per run over m
+    runs, and Q's error: the reference's s² varies by 2/(m − 1) + κ/m relative to σ⁴, the mean of
+    the K squared errors by (2/(n − 1) + κ/n)/K (n the mean runs), κ the excess kurtosis of a run
+    where known and positive, else 0 (normal runs)."""
+    runs = np.asarray(runs, dtype=float)
+    q = math.sqrt(np.mean(per_run**2 / runs)) / math.sqrt(np.mean(np.square(errors)))
+    kappa = kurtosis if np.isfinite(kurtosis) and kurtosis > 0 else 0.0
+    n = float(np.mean(runs))
+    relative_variance = 2.0 / (m - 1) + kappa / m
+    if n >= 2:
+        relative_variance += (2.0 / (n - 1) + kappa / n) / len(errors)
+    return q, q * 0.5 * math.sqrt(relative_variance)
 
 
 def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary=None,
@@ -178,12 +216,13 @@ def print_rows(rows):
         return
     keys = [c for c in KEYS if c in rows[0]]
     print(" ".join(f"{c:>10}" for c in keys) + f" {'column':>16} {'error':>22} {'K':>4} "
-          f"{'runs':>6} {'R':>6} {'95% interval':>14} {'p':>8} {'Q':>12}")
+          f"{'runs':>6} {'R':>6} {'95% interval':>14} {'p':>8} {'kurtosis':>8} {'Q':>12}")
     for r in rows:
         q = f"{r['Q']:.3f}±{r['Q_err']:.3f}" if np.isfinite(r["Q"]) else "-"
+        kurtosis = f"{r['kurtosis']:.2f}" if np.isfinite(r["kurtosis"]) else "-"
         print(" ".join(f"{str(r[c]):>10}" for c in keys) + f" {r['column']:>16} "
               f"{r['error']:>22} {r['K']:>4} {r['runs']:>6.1f} {r['R']:>6.3f} "
-              f"[{r['R_low']:.2f}, {r['R_high']:.2f}] {r['p']:>8.3g} {q:>12}")
+              f"[{r['R_low']:.2f}, {r['R_high']:.2f}] {r['p']:>8.3g} {kurtosis:>8} {q:>12}")
 
 
 def whole_number(minimum):
