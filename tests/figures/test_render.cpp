@@ -159,7 +159,7 @@ val::A2Data synthetic_a2() {
     val::A2Panel panel;
     panel.density = density;
     for (const char* mode : {"none", "paper", "flux", "dsmc"}) {
-      val::A2Series series{std::string("gas ") + mode, mode, {}, {}};
+      val::A2Series series{std::string("gas ") + mode, mode, {}, {}, {}};
       for (int i = 0; i < 10; ++i) {
         const double eps = 0.80 + 0.02 * i;
         series.restitution.push_back(eps);

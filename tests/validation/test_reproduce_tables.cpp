@@ -85,8 +85,9 @@ BOOST_AUTO_TEST_CASE(a2_csv_holds_every_gas_and_both_theory_levels) {
   ReproduceResults r = synthetic_results();
   A2Panel panel;
   panel.density = 0.05;
-  panel.series.push_back({"original", "none", {0.8, 0.9}, {{0.01, 0.002}, {0.02, 0.002}}});
-  panel.series.push_back({"DSMC", "dsmc", {0.8, 0.9}, {{0.03, 0.001}, {0.04, 0.001}}});
+  // The original gas's first point has one run (reproduce --seeds 1): no error (nan, not 0).
+  panel.series.push_back({"original", "none", {0.8, 0.9}, {{0.01, 0.0}, {0.02, 0.002}}, {1, 8}});
+  panel.series.push_back({"DSMC", "dsmc", {0.8, 0.9}, {{0.03, 0.001}, {0.04, 0.001}}, {8, 8}});
   panel.theory_restitution = {0.8, 0.805, 0.81};
   panel.first_sonine = {{-0.02, 0.0}, {-0.021, 0.0}, {-0.022, 0.0}};
   panel.improved = {{-0.025, 1e-13}, {-0.026, 1e-13}, {-0.027, 1e-13}};
@@ -95,6 +96,8 @@ BOOST_AUTO_TEST_CASE(a2_csv_holds_every_gas_and_both_theory_levels) {
   const auto lines = data_lines(csv);
   BOOST_TEST_REQUIRE(lines.size() == 1u + 4u + 6u);
   BOOST_TEST(lines[0] == "dimension,density,restitution,source,a2,a2_err");
+  BOOST_TEST(lines[1] == "2,0.05,0.8,none,0.01,nan");
+  BOOST_TEST(lines[2] == "2,0.05,0.9,none,0.02,0.002");
   BOOST_TEST(lines[3] == "2,0.05,0.8,dsmc,0.03,0.001");
   BOOST_TEST(lines[5] == "2,0.05,0.800,first_sonine,-0.02,0");
   BOOST_TEST(lines[10] == "2,0.05,0.810,a2_a3,-0.027,1e-13");

@@ -160,7 +160,8 @@ std::string a2_csv(const ReproduceResults& r) {
     for (const auto& series : panel.series)
       for (std::size_t i = 0; i < series.a2.size(); ++i)
         s += fmt::format("{},{},{},{},{:.6g},{:.3g}\n", d, panel.density, series.restitution[i],
-                         series.mode, series.a2[i].value, series.a2[i].error);
+                         series.mode, series.a2[i].value,
+                         error_of_runs(series.a2[i].error, series.runs[i]));
     for (std::size_t i = 0; i < panel.theory_restitution.size(); ++i) {
       const double e = panel.theory_restitution[i];
       s += fmt::format("{},{},{:.3f},first_sonine,{:.10g},{:.3g}\n", d, panel.density, e,

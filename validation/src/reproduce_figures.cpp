@@ -84,12 +84,13 @@ namespace {
 
 // a2(ε) of one gas at density n: each point's a2 (mean ± SE over runs of the window average).
 A2Series a2_series(const ReproduceResults& R, double n, const std::string& mode) {
-  A2Series s{mode_label(mode), mode, {}, {}};
+  A2Series s{mode_label(mode), mode, {}, {}, {}};
   for (double e : R.config.restitutions) {
     const auto& p = gas_point(R, n, e, mode);
     if (p.summary.runs == 0) continue;
     s.restitution.push_back(e);
     s.a2.push_back(p.summary.a2);
+    s.runs.push_back(p.summary.runs);
   }
   return s;
 }

@@ -85,6 +85,7 @@ struct A2Series {
   std::string mode;  ///< "none", "paper", "flux" (MD) or "dsmc"
   std::vector<double> restitution;
   std::vector<Measurement> a2;
+  std::vector<int> runs;  ///< runs behind each a2 (its error means nothing below two)
 };
 
 /// One panel of the a2(ε) figure (one density): the gases and the Sonine theory on a fine ε grid.
