@@ -471,8 +471,6 @@ void Engine<D, Observer>::rebuild_neighbours(std::int32_t i) {
   predict<Prefetch>(i);
 }
 
-// After a cell crossing only the cells that came into range can hold new partners: pairs with
-// the other cells were predicted before, by i or by the partner (whichever changed last).
 // A cell crossing: i moves to its next cell (exactly onto the wall), and only the cells that came
 // into range can hold new partners: pairs with the other cells were predicted before, by i or by
 // the partner (whichever changed last). One function for the whole event (the hot path of dilute
