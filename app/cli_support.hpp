@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "molchaos/sim/atomic_file.hpp"
+#include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 
 namespace molchaos::app {
@@ -51,9 +52,12 @@ inline std::string format_interval(double lo, bool lo_closed, double hi, bool hi
 }
 
 /// Characters of `text` that std::strtod reads (0: none). A result that underflows to a subnormal
-/// number or zero is still a number (std::stod would call it out of range).
+/// number or zero is still a number (std::stod would call it out of range). Decimal notation
+/// only: strtod's hexadecimal floats (0x1p-1) are refused, as the integer options refuse 0x10.
 inline std::size_t parse_real(const std::string& text, double& x) {
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) return 0;
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) ||
+      text.find_first_of("xX") != std::string::npos)
+    return 0;
   char* end = nullptr;
   x = std::strtod(text.c_str(), &end);
   return static_cast<std::size_t>(end - text.c_str());
@@ -358,6 +362,15 @@ inline void require_distinct_files(
       throw UsageError(flag, "'" + path + "' is also the file of " + *owner +
                                  ", which would replace what this command reads; give " + *owner +
                                  " another file");
+}
+
+/// Throws UsageError(flag, ...) if the output `path` holds a checkpoint: a stopped run's only way
+/// on, which only --checkpoint may replace (by its own rule, require_replaceable_by_checkpoint).
+inline void require_no_checkpoint_at(const std::string& flag, const std::string& path) {
+  if (sim::is_checkpoint_file(path))
+    throw UsageError(flag, path +
+                               " holds the checkpoint of a run, which this output would "
+                               "replace: choose another name, or remove that file");
 }
 
 }  // namespace molchaos::app

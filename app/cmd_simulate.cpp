@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -246,6 +247,7 @@ void run_simulate(const SimulateOptions& options) {
     require_distinct_files(files, {{"--config", options.config}});
     files.pop_back();
     require_distinct_files(files, {{"--restart", checkpoints.restart}});
+    for (const auto& [flag, path] : files) require_no_checkpoint_at(flag, path);
   }
   {
     // A snapshot file this run would write that another run wrote (a snapshot, or another of its
@@ -295,6 +297,15 @@ void run_simulate(const SimulateOptions& options) {
     if (fs::file_size(restart, ec) == 0)
       throw UsageError("--restart", "'" + restart + "' is empty (no checkpoint in it)");
   }
+  // A restart keeps the run's snapshot times (only t_end may change): a new t_end before the last
+  // of them is refused as such, not as a snapshot time out of range.
+  if (const auto last = std::max_element(p.snapshot_times.begin(), p.snapshot_times.end());
+      !checkpoints.restart.empty() && last != p.snapshot_times.end() && p.t_end < *last &&
+      config_file_that_set("--snapshot-times") == checkpoints.restart)
+    throw UsageError("--t-end", fmt::format("value {} lies before {}, the last snapshot time of the "
+                                            "run in {}, which a restart keeps; allowed: t_end >= {} "
+                                            "(and after the checkpoint's time)",
+                                            p.t_end, *last, checkpoints.restart, *last));
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {

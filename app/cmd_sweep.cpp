@@ -134,7 +134,10 @@ void run_sweep_command(SweepCliOptions& o) {
     throw_as_usage_error("sweep", e.what());
   }
   // Only a sweep that will run creates folders: its cache, and the folder of its summary.
-  if (!o.out.empty()) require_writable_file("--out", o.out, /*create_parent=*/true);
+  if (!o.out.empty()) {
+    require_writable_file("--out", o.out, /*create_parent=*/true);
+    require_no_checkpoint_at("--out", o.out);
+  }
   if (!o.cache.empty()) require_usable_directory("--cache", o.cache);
   // A signal ends the sweep at once (interrupt_signals.hpp): every finished run is in the cache
   // already, written whole, so the handler only says what is kept.

@@ -3,9 +3,14 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
+#include <iterator>
 #include <new>
 #include <string>
 #include <vector>
@@ -13,6 +18,7 @@
 #include "cli_support.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/version.hpp"
 #include "repeated_options.hpp"
@@ -38,6 +44,20 @@ std::string one_line(const std::string& text) {
   }
   while (!line.empty() && line.back() == ' ') line.pop_back();
   return line;
+}
+
+// Standard output is the only copy of some results (theory's tables, a sweep without --out), and
+// a failed write there (a full disk, a closed descriptor) only sets the stream's error state: the
+// last flush and that state say whether everything arrived. Returns the exit status.
+int finish_standard_output() {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && std::cout.good() && !std::ferror(stdout)) return 0;
+  std::fprintf(stderr, "molchaos: failed: cannot write standard output%s%s\n",
+               error != 0 ? ": " : "", error != 0 ? std::strerror(error) : "");
+  return 1;
 }
 
 }  // namespace
@@ -88,16 +108,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ExtrasError&) {
-    // CLI11's message lists the words in reverse order; the command's remaining() has them in
-    // the order typed.
+    // CLI11's message lists the words in reverse order; remaining() has them in the order typed,
+    // the command's first, then those after a "--" (on the top level's list, the "--" with them).
     const std::vector<CLI::App*> parsed = app.get_subcommands();
     const CLI::App* command = parsed.empty() ? &app : parsed.front();
+    std::vector<std::string> typed = command->remaining();
+    if (command != &app) std::ranges::copy(app.remaining(), std::back_inserter(typed));
     std::string words;
-    for (const std::string& word : command->remaining())
-      words += (words.empty() ? "'" : ", '") + word + "'";
+    std::size_t count = 0;
+    for (const std::string& word : typed)
+      if (word != "--") words += (count++ == 0 ? "'" : ", '") + word + "'";
     std::fprintf(stderr, "molchaos: error: %s: unexpected argument%s %s (see molchaos %s--help)\n",
                  command->get_name().empty() ? "molchaos" : command->get_name().c_str(),
-                 command->remaining().size() == 1 ? "" : "s", one_line(words).c_str(),
+                 count == 1 ? "" : "s", one_line(words).c_str(),
                  command == &app ? "" : (command->get_name() + " ").c_str());
     return 2;
   } catch (const CLI::ParseError& e) {
@@ -110,8 +133,9 @@ int main(int argc, char** argv) {
     // A refused value the user did not type names the file it came from.
     const std::string what = e.what();
     const std::string file = molchaos::app::config_file_that_set(what.substr(0, what.find(": ")));
+    const char* given_by = molchaos::sim::is_checkpoint_file(file) ? "--restart" : "--config";
     std::fprintf(stderr, "molchaos: error: %s%s\n", one_line(what).c_str(),
-                 file.empty() ? "" : (" (the value is from --config " + file + ")").c_str());
+                 file.empty() ? "" : fmt::format(" (the value is from {} {})", given_by, file).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "molchaos: failed: %s (or fewer threads, in a sweep)\n",
@@ -121,5 +145,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "molchaos: failed: %s\n", one_line(e.what()).c_str());
     return 1;
   }
-  return 0;
+  return finish_standard_output();
 }

@@ -204,8 +204,10 @@ std::string strip_comment(const std::string& line) {
 bool beyond_toml_integers(const std::string& text) {
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return ec == std::errc() && end == text.data() + text.size() &&
-         value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+  if (end != text.data() + text.size()) return false;
+  return ec == std::errc::result_out_of_range ||
+         (ec == std::errc() &&
+          value > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
 }
 
 ConfigItems read_toml(std::istream& in, const std::string& path,

@@ -23,7 +23,8 @@ ConfigItems read_toml(std::istream& in, const std::string& path,
 
 /// Whether `text` is an unsigned integer beyond 2^63 − 1, which TOML's signed 64-bit integers
 /// cannot hold: written in quotes (half of all seeds), a string of digits that is no mistaken
-/// type, so read_toml does not count it among the quoted numbers.
+/// type, so read_toml does not count it among the quoted numbers. Digits beyond 2^64 − 1 too:
+/// the option's own range refuses them (written bare, they would be refused all the same).
 bool beyond_toml_integers(const std::string& text);
 
 /// `text` without the spaces, tabs and carriage returns around it.

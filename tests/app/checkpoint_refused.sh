@@ -3,8 +3,9 @@
 # A checkpoint that does not fit the run is refused with exit status 2 and one line naming what
 # differs: another format, version, dimension or parameter, a corrupt, truncated or extended file,
 # a head edited to other parameters or to a value that is no number, a t_end before the
-# checkpoint's time; a --checkpoint or snapshot name holding a file that the run would lose (one
-# that is no checkpoint, or the checkpoint of a run it does not continue); and
+# checkpoint's time or its last snapshot time; a --checkpoint or snapshot name holding a file that
+# the run would lose (one that is no checkpoint, or the checkpoint of a run it does not continue),
+# any other output naming a checkpoint; and
 # --checkpoint-interval without --checkpoint; a --restart path that is no file, or empty.
 set -u
 bin=$(realpath "$1")
@@ -25,6 +26,12 @@ refused "--restart.*dimension differs: checkpoint 2, this run 3" \
   "${args[@]}" --dim 3 --out b.csv --restart ck
 refused "--restart.*t_end = 1 lies before the checkpoint's time" \
   "${args[@]}" --t-end 1 --out b.csv --restart ck
+# A restart keeps the run's snapshot times: a t_end before the last is named as such (was: a
+# snapshot time out of range, "from --config").
+"$bin" "${args[@]}" --t-end 20 --snapshot-times 4,15 --out s.csv --checkpoint s.ckpt \
+  --checkpoint-interval 5 2>/dev/null || fail "run with snapshots and checkpoints"
+refused "^molchaos: error: --t-end: value 12 lies before 15, the last snapshot time of the run in s.ckpt, which a restart keeps; allowed: t_end >= 15" \
+  "${args[@]}" --t-end 12 --out b.csv --restart s.ckpt
 # The format this build writes, from the file's second line "format = N".
 current=$(sed -n 2p ck | sed 's/^format = //')
 magic=20 format=$(sed -n 2p ck | wc -c)  # bytes of the lines "molchaos checkpoint", "format = N"
@@ -76,6 +83,16 @@ cmp ck kept.ckpt || fail "another run's checkpoint was changed"
 "$bin" "${args[@]}" --t-end 30 --out e.csv --restart kept.ckpt --checkpoint kept.ckpt \
   --checkpoint-interval 5 2>/dev/null || fail "a restart replacing its own checkpoint was refused"
 cmp -s ck kept.ckpt && fail "the restarted run did not replace its checkpoint"
+# Nor may any other output replace a checkpoint (was: --out, --write-config and a sweep's --out
+# overwrote one without a word).
+cp ck other.ckpt
+refused "--out: other.ckpt holds the checkpoint of a run, which this output would replace" \
+  "${args[@]}" --t-end 5 --out other.ckpt
+refused "--write-config: other.ckpt holds the checkpoint of a run" \
+  "${args[@]}" --t-end 5 --out c.csv --write-config other.ckpt
+refused "--out: other.ckpt holds the checkpoint of a run" \
+  sweep --particles 100 --seeds 1 --cache '' --out other.ckpt
+cmp ck other.ckpt || fail "a checkpoint was replaced by another output"
 printf 'x,y\n1,2\n' >mine.snapshot0.csv
 refused "--out: mine.snapshot0.csv, the name of this run's snapshot 0, holds a file that is no result of molchaos" \
   "${args[@]}" --t-end 5 --snapshot-times 1 --out mine.csv

@@ -305,5 +305,9 @@ cmp big_seed.csv big_seed_again.csv || fail "the run of the largest seed repeate
 "$bin" simulate --particles 50 --t-end 1 --relax 0 --seed 9223372036854775807 --out top.csv \
   --write-config top.toml --quiet 2>/dev/null || fail "run with seed 2^63 - 1"
 grep -qx 'seed = 9223372036854775807' top.toml || fail "seed 2^63 - 1 not bare"
+# Beyond 2^64 - 1 in quotes: refused for its range (was: told to write it bare, which is refused).
+printf 'seed = "18446744073709551616"\n' >beyond_seed.toml
+refused "--config: beyond_seed.toml: key 'seed': --seed: value 18446744073709551616 is outside the allowed range \\[0, 18446744073709551615\\]" \
+  simulate --config beyond_seed.toml
 [ "$failures" -eq 0 ] || fail "$failures errors wrong"
 echo "ok: unknown keys and out-of-range values named with their allowed range; cut headers refused"

@@ -5,7 +5,7 @@
 # paths stay next to --out, a cache that cannot take a run stops the sweep naming the folder, and
 # a full disk (a small tmpfs, where mounting is allowed) or the file-size limit gives exit 1 with
 # no file or temporary left behind, and a signal while a run's outputs are written waits until
-# they are all in place.
+# they are all in place; results on standard output that cannot be written there give exit 1.
 set -u
 bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
@@ -232,6 +232,24 @@ grep -q "stopped by SIGTERM, but its checkpoint could not be written (cannot wri
   fail "the signal not named beside the failed checkpoint: $(cat err.txt)"
 [ "$(ls -A limited)" = run.csv ] || fail "left behind by the failed checkpoint: $(ls -A limited)"
 echo "ok: file-size limit"
+
+# 9. Results whose only copy is standard output (theory's tables, a sweep without --out) that
+# cannot be written there: exit 1 and one line saying so (was: exit 0 and a cut or empty output).
+into_full_device() {
+  "$bin" "$@" >/dev/full 2>full.err
+  local s=$?
+  [ "$s" -eq 1 ] || fail "$* into a full device: status $s"
+  grep -qx "molchaos: failed: cannot write standard output.*" full.err ||
+    fail "$* into a full device said: $(cat full.err)"
+}
+if [ -w /dev/full ]; then
+  into_full_device theory
+  into_full_device theory --json
+  into_full_device sweep --particles 100 --seeds 1 --cache '' --quiet
+  echo "ok: standard output that cannot be written"
+else
+  echo "note: no /dev/full here; standard output into a full device not run"
+fi
 
 # 2. Full disk: exit 1, nothing half-written, no temporary left, the earlier run's file in place.
 if mount_small_tmpfs small 64k; then

@@ -17,11 +17,13 @@ using ProgressCallback = std::function<void(double fraction_done)>;
 
 /// What a run that does not fit in memory says (std::bad_alloc), in the CLI and the Python
 /// module alike: the engine's own need per particle (doc/benchmarks.md: 159-175 bytes per disk,
-/// 171-311 per sphere; a whole run of 10^6 disks peaks at 208), and its snapshots' (positions
-/// and velocities in doubles), which many snapshot times make the larger part.
+/// 171-311 per sphere; a whole run of 10^6 disks peaks at 208), DSMC's (one velocity, padded to
+/// 32 bytes in 3D: dsmc.hpp), and the snapshots' (positions and velocities in doubles), which
+/// many snapshot times make the larger part.
 inline constexpr const char* k_out_of_memory_message =
-    "out of memory; a run holds about 210 bytes per disk and 310 per sphere, and each snapshot "
-    "32 more per disk and 48 per sphere: ask for fewer particles or fewer snapshot times";
+    "out of memory; an event-driven run holds about 210 bytes per disk and 310 per sphere (DSMC "
+    "16 and 32), and each snapshot 32 more per disk and 48 per sphere: ask for fewer particles or "
+    "fewer snapshot times";
 
 /// Richer progress report for front ends that show a rate.
 struct Progress {
