@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -197,7 +198,9 @@ inline void require_writable_directory(const std::string& flag, const std::strin
     throw UsageError(
         flag, "cannot create '" + directory + "': '" + existing.string() + "' is not a directory");
   if (::access(existing.c_str(), W_OK | X_OK) != 0)
-    throw UsageError(flag, "cannot write into '" + existing.string() + "' (permission denied)");
+    throw UsageError(flag, "cannot write into '" + existing.string() + "' (" +
+                               (errno == EROFS ? "a read-only file system" : "permission denied") +
+                               ")");
 }
 
 /// require_writable_directory, then creates the directory and a real file in it (removed again):

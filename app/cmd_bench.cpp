@@ -354,10 +354,11 @@ void add_bench_command(CLI::App& app) {
           ->transform(integer_in(0, 1024))
           ->capture_default_str();
   cmd->add_option("--out", o->out, "output folder")->check(path_name())->capture_default_str();
-  set_callback_with_config(cmd, [o, particles, work, threads] {
+  set_callback_with_config(cmd, [cmd, o, particles, work, threads](const std::string& config) {
     if (particles->count() > 0) o->simulation_flag_given = "--particles";
     if (work->count() > 0) o->simulation_flag_given = "--work";
     if (threads->count() > 0) o->simulation_flag_given = "--threads";
+    require_config_table_kept(*cmd, config, o->out);
     run_bench(*o);
   });
 }

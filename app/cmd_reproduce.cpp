@@ -301,8 +301,9 @@ void add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--relax-each-run", o->relax_each_run,
                 "relax every run itself instead of restoring the relaxed state of an earlier run "
                 "with the same N, density and seed (the same results, more CPU)");
-  set_callback_with_config(cmd, [o, threads] {
+  set_callback_with_config(cmd, [cmd, o, threads](const std::string& config) {
     reject_threads_on_ranks(threads->count() > 0);
+    require_config_table_kept(*cmd, config, o->out);
     run_reproduce(*o);
   });
 }

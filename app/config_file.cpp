@@ -1,6 +1,9 @@
 // --config FILE for every subcommand: a TOML file or a result CSV's header (config_file.hpp).
 #include "config_file.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -343,6 +346,26 @@ std::string config_file_that_set(const std::string& flag) {
 std::vector<std::string> config_file_values(const std::string& path, const std::string& flag) {
   const auto it = values_in_files().find({path, flag});
   return it == values_in_files().end() ? std::vector<std::string>() : it->second.values;
+}
+
+void require_config_table_kept(const CLI::App& cmd, const std::string& config,
+                               const std::string& out_directory) {
+  if (config.empty() ||
+      resolved_path(config).parent_path() != resolved_path(out_directory.empty() ? "." : out_directory))
+    return;
+  std::string changed;
+  for (const auto& [key, file] : values_in_files()) {
+    if (key.first != config || file.set) continue;  // the file's value stands
+    const CLI::Option* op = cmd.get_option_no_throw(key.second);
+    if (op == nullptr || op->results() == file.values) continue;
+    changed += fmt::format("{}{} {} where the table has {}", changed.empty() ? "" : ", ", key.second,
+                           fmt::join(op->results(), ","), fmt::join(file.values, ","));
+  }
+  if (!changed.empty())
+    throw UsageError("--out", "'" + out_directory + "' holds " + config +
+                                  ", the table --config read, which this " + cmd.get_name() +
+                                  " would replace with another run's (" + changed +
+                                  "): give another --out, or copy the table elsewhere first");
 }
 
 bool take_default_over_forced_relaxation(double& relax, const CLI::Option& option,

@@ -77,6 +77,13 @@ bool take_default_over_forced_relaxation(double& relax, const CLI::Option& optio
                                          const std::string& config, bool runs_relax,
                                          const std::string& relaxing_runs);
 
+/// Throws UsageError("--out", ...) if the --config file `config` lies in the output folder
+/// `out_directory` of a command that writes its tables there (reproduce, bench) and a flag on the
+/// command line changed a value the file gave: the run would replace the table it was read from
+/// with another run's. Re-running the table as it is (the same values) rewrites it in place.
+void require_config_table_kept(const CLI::App& cmd, const std::string& config,
+                               const std::string& out_directory);
+
 /// The text in capitals ("edmd" -> "EDMD"), as the notes name a method.
 std::string upper_case(std::string text);
 

@@ -127,6 +127,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "molchaos: error: %s\n", one_line(e.what()).c_str());
     return 2;
   } catch (const molchaos::app::Interrupted& e) {
+    // The results printed so far first, so that a log of both streams ends with this line (and
+    // below; standard output to a file is buffered).
+    std::cout.flush();
     std::fprintf(stderr, "molchaos: %s\n", e.what());
     return molchaos::app::k_exit_interrupted;
   } catch (const molchaos::app::UsageError& e) {
@@ -138,10 +141,12 @@ int main(int argc, char** argv) {
                  file.empty() ? "" : fmt::format(" (the value is from {} {})", given_by, file).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
+    std::cout.flush();
     std::fprintf(stderr, "molchaos: failed: %s (or fewer threads, in a sweep)\n",
                  molchaos::sim::k_out_of_memory_message);
     return 1;
   } catch (const std::exception& e) {
+    std::cout.flush();
     std::fprintf(stderr, "molchaos: failed: %s\n", one_line(e.what()).c_str());
     return 1;
   }

@@ -37,3 +37,19 @@ for table in seven/*.csv; do
   cmp "$table" "again/${table#seven/}" || fail "$table differs when re-run from its own header"
 done
 echo "ok: a table of --base-seed 7 re-runs it from its header"
+
+# Into the folder of the table it read: the same run rewrites the tables in place; another run
+# (a flag that changes a value of the table) would replace the table it was read from, and is
+# refused with nothing changed (was: replaced without a word).
+cp seven/fig4_A_of_eps.csv kept.csv
+"$bin" reproduce --config seven/fig4_A_of_eps.csv --threads 2 --out seven --cache fresh \
+  --no-figures --quiet >log.txt 2>&1 || { cat log.txt; fail "the same run into its own folder"; }
+cmp kept.csv seven/fig4_A_of_eps.csv || fail "the same run into its own folder changed its table"
+"$bin" reproduce --config seven/fig4_A_of_eps.csv --seeds 3 --threads 2 --out seven --cache fresh \
+  --no-figures --quiet >log.txt 2>&1
+status=$?
+[ "$status" -eq 2 ] || fail "another run into the folder of its --config table: status $status"
+grep -q "^molchaos: error: --out: 'seven' holds seven/fig4_A_of_eps.csv, the table --config read, which this reproduce would replace with another run's (--seeds 3 where the table has 2)" log.txt ||
+  fail "another run into the folder of its --config table said: $(cat log.txt)"
+cmp kept.csv seven/fig4_A_of_eps.csv || fail "a refused run changed the table it read"
+echo "ok: a table re-run into its own folder is replaced only by its own run"
