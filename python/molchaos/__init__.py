@@ -1,7 +1,7 @@
 """molchaos from Python: the kinetic theory and the event-driven simulation of granular gases
 (compiled extension _molchaos), and readers for every file the suite writes (readers.py)."""
 
-from ._molchaos import __version__, simulate
+from ._molchaos import __version__, clear_relaxed_states, simulate
 from ._molchaos import _theory, _theory_keywords
 from .readers import read_run_csv, read_snapshot_csv, read_table, read_trajectory
 
@@ -25,6 +25,7 @@ theory.__doc__ = _theory.__doc__
 __all__ = [
     "__version__",
     "simulate",
+    "clear_relaxed_states",
     "theory",
     "read_run_csv",
     "read_snapshot_csv",

@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -25,6 +27,7 @@
 #include "molchaos/sim/checkpoint.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/parameters.hpp"
+#include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/sim/run.hpp"
 #include "molchaos/theory/collision_moments.hpp"
 #include "molchaos/theory/theory_report.hpp"
@@ -494,7 +497,14 @@ std::string simulate_doc() {
       "SIGTERM, which otherwise ends Python at once, install one (signal.signal(\n"
       "signal.SIGTERM, handler), handler raising KeyboardInterrupt). Python runs signal\n"
       "handlers in the main thread only, so a run called from another thread is not stopped\n"
-      "by them. The engine runs without the GIL.\n"
+      "by them. The engine runs without the GIL.\n" +
+      fmt::format(
+          "\nThe relaxed state of a run (N, density, seed, relaxation and the other parameters\n"
+          "the relaxation reads) is kept in the process for the next run of the same key, which\n"
+          "then starts from it bit for bit instead of relaxing again (an ensemble over\n"
+          "restitutions): states of up to {} MB, {} MB in all, the oldest dropped first.\n"
+          "clear_relaxed_states() frees them (a loop over many seeds).\n",
+          sim::k_largest_kept_state >> 20, sim::k_kept_bytes >> 20) +
       "\nReturns a dict:\n"
       "  t, T, a2, velocity_mode, density_mode: float64 arrays, one entry per sample (time,\n"
       "      temperature T = m<v^2>/d, second Sonine coefficient, largest-scale momentum and\n"
@@ -560,6 +570,9 @@ PYBIND11_MODULE(_molchaos, m) {
       "critical_heat_wavenumber, transport, largest_shear_mode (linear hydrodynamics); seconds.\n"
       "Each error is the quadrature's estimate of the value beside it.");
   m.def("simulate", &simulate, simulate_doc().c_str());
+  m.def("clear_relaxed_states", &molchaos::sim::clear_relaxed_states,
+        "Frees the relaxed states that simulate() keeps for later runs of the same key (see\n"
+        "simulate's help); the runs after it relax again, to the same bits.");
   m.attr("_flag_parameters") = parameters_of_type<bool>();
   m.attr("_real_parameters") = parameters_of_type<double>();
 }

@@ -81,9 +81,12 @@ std::string run_layout() {
 
 // The relaxation, or its end state restored from an earlier run of the same key
 // (relaxed_states.hpp): the same state either way, bit for bit.
+// A run without relaxation keeps nothing: its state is the constructor's, which costs no more
+// to rebuild than to restore.
 template <class RunEngine>
 bool relax_or_restore(RunEngine& engine, const Parameters& p, const std::function<bool()>& go_on) {
-  const bool shared = relaxed_states_shared() && engine.memory_bytes() <= k_largest_kept_state;
+  const bool shared = relaxed_states_shared() && p.relax_collisions_per_particle > 0 &&
+                      engine.memory_bytes() <= k_largest_kept_state;
   const std::string key = shared ? relaxed_state_key(p, run_layout<RunEngine>()) : std::string();
   if (shared)
     if (const auto state = find_relaxed_state(key)) {

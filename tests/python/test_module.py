@@ -501,3 +501,11 @@ def test_simulate_names_an_unknown_keyword_and_what_a_flag_is_called_here():
         molchaos.simulate(relax=0)
     with pytest.raises(TypeError, match=r"argument 'tend'; allowed: dim, .*, restart$"):
         molchaos.simulate(tend=1)
+
+
+def test_clear_relaxed_states_frees_the_kept_states_and_the_runs_after_it_give_the_same_bits():
+    first = molchaos.simulate(particles=300, t_end=1, seed=21)
+    molchaos.clear_relaxed_states()
+    again = molchaos.simulate(particles=300, t_end=1, seed=21)  # relaxes itself again
+    assert np.array_equal(first["T"], again["T"]) and first["total_events"] == again["total_events"]
+    assert "clear_relaxed_states()" in molchaos.simulate.__doc__

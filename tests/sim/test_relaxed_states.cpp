@@ -1,7 +1,7 @@
 // Shared relaxed states (relaxed_states.hpp): a run that restores the state an earlier run of the
 // same key kept gives the same bytes as the run that relaxed itself, in 2D and 3D, with cells and
 // with neighbour lists, with and without contact statistics; the key separates what relaxation
-// depends on and ignores what it does not.
+// depends on and ignores what it does not; a run without relaxation keeps nothing.
 #define BOOST_TEST_MODULE test_relaxed_states
 #include <boost/test/unit_test.hpp>
 #include <sstream>
@@ -100,4 +100,18 @@ BOOST_AUTO_TEST_CASE(a_key_keeps_its_first_state_and_clearing_drops_all) {
   BOOST_TEST(!find_relaxed_state("k"));
   keep_relaxed_state("big", std::string(k_largest_kept_state + 1, 'x'));
   BOOST_TEST(!find_relaxed_state("big"));
+}
+
+BOOST_AUTO_TEST_CASE(a_run_without_relaxation_keeps_no_state) {
+  share_relaxed_states(true);
+  clear_relaxed_states();
+  Parameters p = small_run(2, 0.1, 0.8, Randomization::none);
+  p.relax_collisions_per_particle = 0;
+  const std::string first = csv_of(p);
+  BOOST_TEST(kept_relaxed_states() == 0u);  // was one state per seed, up to k_kept_bytes
+  BOOST_TEST(csv_of(p) == first);
+  p.relax_collisions_per_particle = 1;
+  csv_of(p);
+  BOOST_TEST(kept_relaxed_states() == 1u);
+  clear_relaxed_states();
 }
