@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -116,27 +117,36 @@ void stop_if_interrupted(const std::string& stopped, const StagedOutputs& staged
   if (interrupt_signals::requested().load()) end_by_signal(stopped, staged);
 }
 
-// Figures in --out that this reproduction did not write (it ran with --no-figures, or a quick look
-// into the folder of a paper-scale one, whose break-down figures it has not): named, since the
-// report beside them does not describe them. They are the user's to keep or remove.
-void note_figures_of_other_runs(const std::string& out, const std::vector<std::string>& written) {
+// Figures and tables in --out that this reproduction did not write (it ran with --no-figures, or
+// a quick look into the folder of a paper-scale one, whose break-down figures and tables it has
+// not): named, since the report beside them does not describe them. They are the user's to keep
+// or remove. A table of a reproduction has the re-run lines under its title (rerun_lines()), the
+// first "# quick = ..."; a CSV of the user's own has not.
+void note_outputs_of_other_runs(const std::string& out, const std::vector<std::string>& written) {
+  const auto reproduction_table = [](const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::string title, second;
+    return std::getline(in, title) && std::getline(in, second) && second.starts_with("# quick = ");
+  };
   std::vector<std::string> others;
+  int figures = 0;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(out, ec)) {
     const std::string name = entry.path().filename().string();
     const std::string extension = entry.path().extension().string();
-    if (name.starts_with("fig") && (extension == ".png" || extension == ".gif") &&
-        std::ranges::find(written, name) == written.end())
-      others.push_back(name);
+    if (std::ranges::find(written, name) != written.end()) continue;
+    const bool figure = name.starts_with("fig") && (extension == ".png" || extension == ".gif");
+    if (figure || (extension == ".csv" && reproduction_table(entry.path()))) others.push_back(name);
+    figures += figure;
   }
   if (others.empty()) return;
   std::ranges::sort(others);
   std::string list;
   for (const std::string& name : others) list += (list.empty() ? "" : ", ") + name;
   std::cerr << fmt::format(
-      "note: {} holds {} figure(s) of an earlier reproduction, which the new report does not "
-      "describe: {}\n",
-      out, others.size(), list);
+      "note: {} holds {} figure(s) and {} table(s) of an earlier reproduction, which the new "
+      "report does not describe: {}\n",
+      out, figures, others.size() - static_cast<std::size_t>(figures), list);
 }
 
 // The command line as the report names it: the options that change what the report says. --out,
@@ -272,7 +282,7 @@ void run_reproduce(const ReproduceCliOptions& o) {
       "{} claims, {} of them not reproduced or contradicted (see the summary of the report)\n",
       results.claims.size(), validation::count_not_reproduced(results));
   std::cout.flush();
-  note_figures_of_other_runs(o.out, written);
+  note_outputs_of_other_runs(o.out, written);
   if (results.failed_runs > 0)
     throw std::runtime_error(
         fmt::format("{} run(s) failed; see {}/REPORT.md", results.failed_runs, o.out));

@@ -43,6 +43,14 @@ echo "ok: an interrupted reproduce leaves no temporary and no gnuplot; the next 
 
 # A reproduction without figures into that folder names the figures its report does not describe.
 "$bin" "${args[@]}" --no-figures --out "$out" >/dev/null 2>nofig.err || fail "--no-figures run"
-grep -q "^note: $out holds [0-9]* figure(s) of an earlier reproduction, which the new report does not describe: fig3_temperature.png, " \
+grep -q "^note: $out holds [0-9]* figure(s) and 0 table(s) of an earlier reproduction, which the new report does not describe: fig3_temperature.png, " \
   nofig.err || fail "no note of the earlier figures: $(cat nofig.err)"
-echo "ok: figures of an earlier reproduction named"
+# So are tables of an earlier reproduction that this one did not write (a quick look into the
+# folder of a paper-scale one, whose break-down tables it has not); a CSV of the user's own is not.
+sed 's/^# quick = true$/# quick = false/' "$out/fig4_A_of_eps.csv" >"$out/breakdown_gases.csv"
+printf 'x,y\n1,2\n' >"$out/mine.csv"
+"$bin" "${args[@]}" --no-figures --out "$out" >/dev/null 2>nofig.err || fail "--no-figures run"
+grep -q "^note: $out holds [0-9]* figure(s) and 1 table(s) of an earlier reproduction, which the new report does not describe: breakdown_gases.csv, fig3_temperature.png, " \
+  nofig.err || fail "no note of the earlier table: $(cat nofig.err)"
+! grep -q "mine.csv" nofig.err || fail "a CSV of the user's own named as a reproduction's"
+echo "ok: figures and tables of an earlier reproduction named"
