@@ -328,7 +328,9 @@ void run_bench(const BenchOptions& o) {
   // Created, and a file written in it, before the work; removed again by a signal that ends the
   // measurements, which write nothing until they are done.
   interrupt_signals::remove_if_empty_when_ended_early(require_usable_directory("--out", o.out));
-  interrupt_signals::install();
+  interrupt_signals::install(
+      "molchaos: bench interrupted during its measurements; nothing written (a table is written "
+      "once its measurements are done), and the same command measures again from the start\n");
   if (o.theory) bench_theory(o);
   if (o.simulation) bench_simulation(o);
 }

@@ -55,4 +55,8 @@ wait $pid
 status=$?
 [ $status -eq 143 ] || fail "a signal during the measurements: status $status, stderr $(cat early.err)"
 [ -d kept ] && [ ! -e kept/new ] || fail "the folders created for the table stayed: $(find kept)"
-echo "ok: a signal during the measurements removes the empty folders bench created"
+# And says so in one line (was: nothing after the last progress line).
+grep -qx "molchaos: bench interrupted during its measurements; nothing written .*" early.err ||
+  fail "a signal during the measurements said: $(cat early.err)"
+! grep -q "from cache" early.err || fail "bench, which has no cache, counted runs from one"
+echo "ok: a signal during the measurements removes the empty folders bench created, and says so"

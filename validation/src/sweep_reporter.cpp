@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace molchaos::validation {
 
@@ -43,9 +44,13 @@ void SweepReporter::done(bool from_cache) {
   const std::size_t computed = finished - cached_.load();
   const double per_run = computed > 0 ? elapsed / static_cast<double>(computed) : 0.0;
   const double eta = per_run * static_cast<double>(total_ - finished) / workers_;
+  // Without a cache (--cache '', bench) no run can come from one: not counted.
+  const std::string cached = options_.cache_directory.empty()
+                                 ? std::string()
+                                 : " (" + std::to_string(cached_.load()) + " from cache)";
   std::lock_guard<std::mutex> lock(mutex_);
-  std::fprintf(stderr, "%s[%s] %zu/%zu runs done (%zu from cache), elapsed %.0f s, ~%.0f s left%s",
-               tty_ ? "\r" : "", options_.label.c_str(), finished, total_, cached_.load(), elapsed,
+  std::fprintf(stderr, "%s[%s] %zu/%zu runs done%s, elapsed %.0f s, ~%.0f s left%s",
+               tty_ ? "\r" : "", options_.label.c_str(), finished, total_, cached.c_str(), elapsed,
                eta, tty_ ? (finished == total_ ? "\n" : "") : "\n");
   std::fflush(stderr);
 }
