@@ -172,9 +172,10 @@ void run_sweep_command(SweepCliOptions& o) {
     if (s.restitution >= 1.0) {
       // As for A below: one run has no standard error.
       std::cout << fmt::format(
-          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {}  ({} runs){}\n", s.density,
+          "{:>8} {:>6} {:>6} {:>6}  omega/omega_Enskog = {:.5f} ± {}  ({} run{}){}\n", s.density,
           s.restitution, validation::method_name(p.method), s.mode, p.collision_ratio.value,
           s.runs >= 2 ? fmt::format("{:.5f}", p.collision_ratio.error) : "-", s.runs,
+          s.runs == 1 ? "" : "s",
           s.runs >= 2   ? ""
           : s.runs == 0 ? "  (not measured: no run succeeded)"
                         : "  (no error bar: fewer than 2 runs)");

@@ -180,6 +180,13 @@ BOOST_AUTO_TEST_CASE(straight_line_fit) {
   // Exact data: χ² = 0, errors from the weights alone: σ_slope = σ/√Σ(x − x̄)².
   BOOST_TEST(std::abs(f.slope_error - 0.1 / std::sqrt(0.0125)) <= 1e-9);
   BOOST_CHECK_THROW(fit_line({1.0}, {{1.0, 0.1}}), std::invalid_argument);
+  // Without errors: the slope error from the scatter about the line, and no χ² (was the mean
+  // squared residual, printed as χ²/dof). Residuals +-0.01 alternating about y = 1 + x.
+  std::vector<Measurement> bare;
+  for (std::size_t k = 0; k < x.size(); ++k) bare.push_back({1.0 + x[k] + (k % 2 ? 0.01 : -0.01), 0.0});
+  const LinearFit g = fit_line(x, bare);
+  BOOST_TEST(std::isnan(g.chi2_per_dof));
+  BOOST_TEST(g.slope_error > 0.0);
 }
 
 BOOST_AUTO_TEST_CASE(mean_and_standard_error_values) {

@@ -48,14 +48,17 @@ double division_rounding(double num, double den) {
 // polynomial is the two-dimensional one (eq. Son2) and ½√(2π) the d = 2 value of μ2(0,0)/(1 − ε²).
 // In d = 3 they make no claim to test. Eq. tau0 and eq. TDef are written in d = 3 form (σ², 1/3)
 // and are tested in either d.
-constexpr const char* k_two_dimensional_only =
+constexpr const char* k_mu2_two_dimensional =
     "not applicable (the paper's formula is for d = 2: eq. mu2a2b with the 2D Sonine polynomial, "
     "eq. Son2)";
+constexpr const char* k_omega0_two_dimensional =
+    "not applicable (the paper's omega0, eq. A, is built on the d = 2 value of mu2(0,0) in eq. "
+    "mu2a2b)";
 
-PaperCheck two_dimensional_row(int dimension, PaperCheck row) {
+PaperCheck two_dimensional_row(int dimension, PaperCheck row, const char* why) {
   if (dimension != 2) {
     row.reproduced.reset();
-    row.note = k_two_dimensional_only;
+    row.note = why;
   }
   return row;
 }
@@ -77,7 +80,8 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
   rows.push_back(two_dimensional_row(
       dimension,
       {"mu2(0,0)/(1-eps^2)", paper_mu2, mu2_value, mu2_error,
-       verdict(paper_mu2, mu2_value, mu2_error), "quadrature of eq. defmu2 at a2 = b = 0"}));
+       verdict(paper_mu2, mu2_value, mu2_error), "quadrature of eq. defmu2 at a2 = b = 0"},
+      k_mu2_two_dimensional));
   // Prefactor of eq. tau0, 1/tau0 = c g2 sigma^{d-1} n sqrt(2 T0/m) mu2: derived c = 1/d.
   const double tau0_c = 1.0 / d, tau0_error = division_rounding(1.0, d);
   rows.push_back({"tau0 prefactor c in 1/tau0 = c g2 n sqrt(2T0) mu2", k_paper_tau0_prefactor,
@@ -91,7 +95,8 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
   rows.push_back(two_dimensional_row(
       dimension, {"omega0 prefactor c in omega0 = c g2 n sqrt(pi T0)", k_paper_omega0_prefactor,
                   omega_c, omega_error, verdict(k_paper_omega0_prefactor, omega_c, omega_error),
-                  "c = 1/2 (d = 2), 2/3 (d = 3)"}));
+                  "c = 1/2 (d = 2), 2/3 (d = 3)"},
+      k_omega0_two_dimensional));
   // Temperature definition, eq. TDef: T = m/(c n) ∫ v² f; derived c = d (an exact integer).
   rows.push_back({"temperature definition c in T = m/(c n) int v^2 f", k_paper_temperature_divisor,
                   d, 0.0, verdict(k_paper_temperature_divisor, d, 0.0),

@@ -99,10 +99,12 @@ LinearFit fit_line(const std::vector<double>& x, const std::vector<Measurement>&
   const double dof = static_cast<double>(n - 2);
   Eigen::Matrix2d cov = normal.inverse();
   LinearFit f;
-  f.chi2_per_dof = dof > 0 ? chi2 / dof : 0.0;
-  // Unweighted: errors from the residual scatter. Weighted: inflate only when χ²/dof > 1.
-  const double scale = weighted ? std::max(1.0, f.chi2_per_dof) : f.chi2_per_dof;
-  cov *= scale;
+  const double per_dof = dof > 0 ? chi2 / dof : 0.0;  // unweighted: the mean squared residual
+  // Unweighted: errors from the residual scatter, and no χ² (the points carry no errors; a
+  // table or figure that printed the mean squared residual as χ²/dof would mislead).
+  // Weighted: inflate only when χ²/dof > 1.
+  f.chi2_per_dof = weighted ? per_dof : std::numeric_limits<double>::quiet_NaN();
+  cov *= weighted ? std::max(1.0, per_dof) : per_dof;
   f.intercept = beta(0);
   f.slope = beta(1);
   f.intercept_error = std::sqrt(cov(0, 0));

@@ -506,7 +506,8 @@ std::string report_markdown(const ReproduceResults& r, const std::vector<std::st
   s += two_routes_headline(r.correlations);
   s += summary_section(r);
   s += setup_section(r, command);
-  s += "## Figures\n\n";
+  // Without figures (--no-figures, or no gnuplot) no empty section: the tables follow.
+  if (!figures.empty()) s += "## Figures\n\n";
   for (const auto& f : figures) {
     if (f.ends_with(".gif")) continue;  // linked beside its still figure
     s += fmt::format("![{}]({})\n\n", f, f);

@@ -39,7 +39,8 @@ double error_of_runs(double error, int runs);
 double collision_frequency_ratio(const sim::RunResult& run);
 
 /// Weighted least-squares line y = a + b x (weights 1/σ²; unweighted if any σ is 0), by Eigen.
-/// Parameter errors from the covariance, scaled by χ²/dof when χ²/dof > 1.
+/// Parameter errors from the covariance, scaled by χ²/dof when χ²/dof > 1; unweighted, from the
+/// residual scatter, and χ²/dof is nan (no errors, no χ²).
 LinearFit fit_line(const std::vector<double>& x, const std::vector<Measurement>& y);
 
 /// Summary of the runs of one state point.
