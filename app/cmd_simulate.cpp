@@ -302,10 +302,11 @@ void run_simulate(const SimulateOptions& options) {
   if (const auto last = std::max_element(p.snapshot_times.begin(), p.snapshot_times.end());
       !checkpoints.restart.empty() && last != p.snapshot_times.end() && p.t_end < *last &&
       config_file_that_set("--snapshot-times") == checkpoints.restart)
-    throw UsageError("--t-end", fmt::format("value {} lies before {}, the last snapshot time of the "
-                                            "run in {}, which a restart keeps; allowed: t_end >= {} "
-                                            "(and after the checkpoint's time)",
-                                            p.t_end, *last, checkpoints.restart, *last));
+    throw UsageError("--t-end",
+                     fmt::format("value {} lies before {}, the last snapshot time of the "
+                                 "run in {}, which a restart keeps; allowed: t_end >= {} "
+                                 "(and after the checkpoint's time)",
+                                 p.t_end, *last, checkpoints.restart, *last));
   try {
     sim::validate(p);
   } catch (const std::invalid_argument& e) {

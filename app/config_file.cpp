@@ -350,16 +350,16 @@ std::vector<std::string> config_file_values(const std::string& path, const std::
 
 void require_config_table_kept(const CLI::App& cmd, const std::string& config,
                                const std::string& out_directory) {
-  if (config.empty() ||
-      resolved_path(config).parent_path() != resolved_path(out_directory.empty() ? "." : out_directory))
+  if (config.empty() || resolved_path(config).parent_path() !=
+                            resolved_path(out_directory.empty() ? "." : out_directory))
     return;
   std::string changed;
   for (const auto& [key, file] : values_in_files()) {
     if (key.first != config || file.set) continue;  // the file's value stands
     const CLI::Option* op = cmd.get_option_no_throw(key.second);
     if (op == nullptr || op->results() == file.values) continue;
-    changed += fmt::format("{}{} {} where the table has {}", changed.empty() ? "" : ", ", key.second,
-                           fmt::join(op->results(), ","), fmt::join(file.values, ","));
+    changed += fmt::format("{}{} {} where the table has {}", changed.empty() ? "" : ", ",
+                           key.second, fmt::join(op->results(), ","), fmt::join(file.values, ","));
   }
   if (!changed.empty())
     throw UsageError("--out", "'" + out_directory + "' holds " + config +

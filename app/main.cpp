@@ -137,8 +137,9 @@ int main(int argc, char** argv) {
     const std::string what = e.what();
     const std::string file = molchaos::app::config_file_that_set(what.substr(0, what.find(": ")));
     const char* given_by = molchaos::sim::is_checkpoint_file(file) ? "--restart" : "--config";
-    std::fprintf(stderr, "molchaos: error: %s%s\n", one_line(what).c_str(),
-                 file.empty() ? "" : fmt::format(" (the value is from {} {})", given_by, file).c_str());
+    std::fprintf(
+        stderr, "molchaos: error: %s%s\n", one_line(what).c_str(),
+        file.empty() ? "" : fmt::format(" (the value is from {} {})", given_by, file).c_str());
     return 2;
   } catch (const std::bad_alloc&) {
     std::cout.flush();

@@ -1,10 +1,9 @@
 // The compiled part of the Python module `molchaos`: the kinetic-theory prediction and one
 // simulation run, each returned as plain Python values (dicts, numpy arrays).
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>

@@ -183,7 +183,8 @@ BOOST_AUTO_TEST_CASE(straight_line_fit) {
   // Without errors: the slope error from the scatter about the line, and no χ² (was the mean
   // squared residual, printed as χ²/dof). Residuals +-0.01 alternating about y = 1 + x.
   std::vector<Measurement> bare;
-  for (std::size_t k = 0; k < x.size(); ++k) bare.push_back({1.0 + x[k] + (k % 2 ? 0.01 : -0.01), 0.0});
+  for (std::size_t k = 0; k < x.size(); ++k)
+    bare.push_back({1.0 + x[k] + (k % 2 ? 0.01 : -0.01), 0.0});
   const LinearFit g = fit_line(x, bare);
   BOOST_TEST(std::isnan(g.chi2_per_dof));
   BOOST_TEST(g.slope_error > 0.0);

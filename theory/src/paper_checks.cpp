@@ -93,9 +93,10 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
       std::sqrt(2.0) * mu2_maxwell_prefactor(dimension) / (d * std::sqrt(std::numbers::pi));
   const double omega_error = rounding_bound(omega_c, 8.0);
   rows.push_back(two_dimensional_row(
-      dimension, {"omega0 prefactor c in omega0 = c g2 n sqrt(pi T0)", k_paper_omega0_prefactor,
-                  omega_c, omega_error, verdict(k_paper_omega0_prefactor, omega_c, omega_error),
-                  "c = 1/2 (d = 2), 2/3 (d = 3)"},
+      dimension,
+      {"omega0 prefactor c in omega0 = c g2 n sqrt(pi T0)", k_paper_omega0_prefactor, omega_c,
+       omega_error, verdict(k_paper_omega0_prefactor, omega_c, omega_error),
+       "c = 1/2 (d = 2), 2/3 (d = 3)"},
       k_omega0_two_dimensional));
   // Temperature definition, eq. TDef: T = m/(c n) ∫ v² f; derived c = d (an exact integer).
   rows.push_back({"temperature definition c in T = m/(c n) int v^2 f", k_paper_temperature_divisor,
