@@ -81,9 +81,14 @@ def run_sweep(binary, args, base_seed, staged, reproduce_table=None):
         done = subprocess.run(command, capture_output=True, text=True)
         # A sweep some of whose runs failed (a gas that clustered before its fit window) still
         # writes its table, whose points count the runs that succeeded, and exits with 1.
-        if done.returncode not in (0, 1) or not os.path.exists(out):
+        if done.returncode not in (0, 1):
             raise RuntimeError(f"{' '.join(command)} failed (exit {done.returncode}):\n"
                                f"{done.stderr.strip()}")
+        if not os.path.exists(out):
+            written = sorted(f for f in os.listdir(os.path.dirname(out)) if f.endswith(".csv"))
+            raise RuntimeError(f"{' '.join(command)} wrote no table {os.path.basename(out)}"
+                               + (f"; its tables: {', '.join(written)}" if written else "")
+                               + (f"\n{done.stderr.strip()}" if done.stderr.strip() else ""))
         table, _ = molchaos.read_table(out)
         return table
 
@@ -184,8 +189,14 @@ def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary
     if reproduce_table and reference_seeds:
         raise ValueError("reference_seeds: a reference is a sweep's; give none with a "
                          "reproduction's table")
+    # The last fallback is the build beside this script's repository, wherever it is run from.
     binary = binary or os.environ.get("MOLCHAOS_BIN") or shutil.which("molchaos") or \
-        "build/molchaos"
+        os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "molchaos")
+    if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
+        raise ValueError(f"molchaos: no program at {binary}; give it with --molchaos PATH or "
+                         f"MOLCHAOS_BIN")
+    # The table a reproduction writes is known only after it ran: a misspelt name is found by
+    # the first repetition (and named with the tables it did write), not after all of them.
     args = without(list(sweep_args), AUDIT_OWNS + (["--no-figures"] if reproduce_table else []))
     staged = any(a.split("=", 1)[0] == "--target-error" for a in args)
     tables = []
@@ -201,6 +212,11 @@ def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary
         reference = run_sweep(binary, without(args, STAGING) + ["--seeds", str(reference_seeds)],
                               first_base_seed + repeats, staged=False)
     rows = audit(tables, reference)
+    if not rows:
+        # One seed per point (or per stage) gives no error to test: say so, as a failure.
+        raise RuntimeError("no column with errors to audit: the tables carry no error bars "
+                           "(a sweep or reproduction of one seed per point has none; give "
+                           "--seeds 2 or more) or no point has a value in every repetition")
     if out:
         import csv
         with open(out, "w", newline="") as f:
@@ -211,9 +227,6 @@ def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary
 
 
 def print_rows(rows):
-    if not rows:
-        print("no column with errors to audit (too few repetitions with values)")
-        return
     keys = [c for c in KEYS if c in rows[0]]
     print(" ".join(f"{c:>10}" for c in keys) + f" {'column':>16} {'error':>22} {'K':>4} "
           f"{'runs':>6} {'R':>6} {'95% interval':>14} {'p':>8} {'kurtosis':>8} {'Q':>12}")
@@ -251,7 +264,7 @@ if __name__ == "__main__":
                              "(e.g. fig4_fits.csv)")
     parser.add_argument("--molchaos", default=None,
                         help="the molchaos program (default: $MOLCHAOS_BIN, then PATH, then "
-                             "build/molchaos)")
+                             "build/molchaos beside this script's folder)")
     parser.add_argument("--out", default=None, help="also write the table as CSV here")
     parser.add_argument("sweep_args", nargs=argparse.REMAINDER,
                         help="-- then the options of `molchaos sweep`")

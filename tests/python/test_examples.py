@@ -191,8 +191,33 @@ def test_error_bar_audit_passes_on_the_sweeps_own_error(molchaos_bin):
 def test_error_bar_audit_takes_the_table_of_a_sweep_whose_runs_failed(molchaos_bin):
     # Such a sweep exits with 1 but writes its table (its points count the runs that succeeded):
     # the audit took the exit status for a failure of the whole sweep. Here every run ends before
-    # its transient, so no column has values to audit.
-    rows = load("error_bar_audit").main(
-        ["--particles", "100", "--restitution", "0.8", "--seeds", "2", "--t-end-tau0", "0.01"],
-        repeats=3, binary=molchaos_bin)
-    assert rows == []
+    # its transient, so no column has values to audit, which is an error (it was an empty
+    # audit and exit status 0).
+    with pytest.raises(RuntimeError, match="no column with errors to audit"):
+        load("error_bar_audit").main(
+            ["--particles", "100", "--restitution", "0.8", "--seeds", "2", "--t-end-tau0",
+             "0.01"], repeats=3, binary=molchaos_bin)
+
+
+def test_error_bar_audit_names_why_it_cannot_audit(molchaos_bin, tmp_path):
+    audit = os.path.join(EXAMPLES, "error_bar_audit.py")
+    env = dict(os.environ, MOLCHAOS_BIN=molchaos_bin)
+    # One seed per point: no error bars (was "too few repetitions" and exit status 0).
+    out = subprocess.run([sys.executable, audit, "--repeats", "3", "--", "--particles", "100",
+                          "--seeds", "1", "--cache", ""], capture_output=True, text=True,
+                         timeout=120, env=env)
+    assert out.returncode == 1 and "--seeds 2 or more" in out.stderr, out.stderr
+    # A table the reproduction does not write: named after the first repetition, with the
+    # tables it wrote (was "failed (exit 0)" after all repetitions).
+    out = subprocess.run([sys.executable, audit, "--repeats", "3", "--reproduce", "nonexist.csv",
+                          "--", "--quick", "--threads", "2"], capture_output=True, text=True,
+                         timeout=120, env=env)
+    assert out.returncode == 1 and "wrote no table nonexist.csv; its tables: " in out.stderr
+    assert "fig4_fits.csv" in out.stderr and "Traceback" not in out.stderr
+    # Run from another folder without MOLCHAOS_BIN or molchaos on PATH: the build beside the
+    # script, or a message naming where it looked (was a FileNotFoundError traceback).
+    bare = {k: v for k, v in os.environ.items() if k != "MOLCHAOS_BIN"}
+    bare["PATH"] = "/usr/bin:/bin"
+    out = subprocess.run([sys.executable, audit, "--repeats", "3", "--", "--restitution", "2"],
+                         capture_output=True, text=True, timeout=60, env=bare, cwd=tmp_path)
+    assert out.returncode == 1 and "Traceback" not in out.stderr, out.stderr
