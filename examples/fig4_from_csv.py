@@ -25,21 +25,27 @@ def main(table_path, png_path):
     if missing:
         raise ValueError(f"{table_path}: not a Fig. 4 table (fig4_A_of_eps.csv): no column "
                          f"{', '.join(sorted(missing))}")
-    fig, ax = plt.subplots(figsize=(5, 4))
-    for (density, mode), rows in table.groupby(["density", "randomize"]):
-        rows = rows.sort_values("restitution")
-        # A_err is nan for a point of one run (no standard error): no bar there.
-        error = rows["A_err"] if rows["A_err"].notna().any() else None
-        ax.errorbar(rows["restitution"], rows["A"], yerr=error, fmt="o", capsize=2,
-                    label=f"{'DSMC' if mode == 'dsmc' else 'MD'}, n = {density}, {mode}")
-    theory = table.drop_duplicates(["density", "restitution"]).sort_values("restitution")
-    for density, rows in theory.groupby("density"):
-        ax.plot(rows["restitution"], rows["A_theory"], "-", label=f"theory, n = {density}")
-    ax.set_xlabel(r"restitution $\varepsilon$")
-    ax.set_ylabel(r"$A = \tau_0 (1-\varepsilon^2)$")
-    ax.set_yscale("log")
-    ax.set_title(f"d = {meta.get('dimension', '?')}, N = {meta.get('particles', '?')}")
-    ax.legend(fontsize=7)
+    # One panel per density on a linear axis, as the paper's Fig. 4: the gases differ by a few
+    # per cent, which a shared or logarithmic axis would flatten.
+    densities = sorted(table["density"].unique())
+    fig, axes = plt.subplots(1, len(densities), figsize=(4.5 * len(densities), 4), squeeze=False)
+    labels = {"none": "original gas", "paper": "paper's shuffle", "flux": "flux-weighted shuffle",
+              "dsmc": "DSMC"}
+    for ax, density in zip(axes[0], densities):
+        panel = table[table["density"] == density]
+        for mode, rows in panel.groupby("randomize"):
+            rows = rows.sort_values("restitution")
+            # A_err is nan for a point of one run (no standard error): no bar there.
+            error = rows["A_err"] if rows["A_err"].notna().any() else None
+            ax.errorbar(rows["restitution"], rows["A"], yerr=error, fmt="o", capsize=2,
+                        label=labels.get(mode, mode))
+        theory = panel.drop_duplicates("restitution").sort_values("restitution")
+        ax.plot(theory["restitution"], theory["A_theory"], "k--", label="kinetic theory (b = 0)")
+        ax.set_xlabel(r"restitution $\varepsilon$")
+        ax.set_ylabel(r"$A = \tau_0 (1-\varepsilon^2)$")
+        ax.set_title(f"d = {meta.get('dimension', '?')}, n = {density}, "
+                     f"N = {meta.get('particles', '?')}")
+        ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(png_path, dpi=120)
     return table

@@ -394,9 +394,19 @@ double epsilon_span(double eps_min, double eps_max) { return std::max(eps_max - 
 }  // namespace
 
 void set_density_panel(std::string& commands, double density, double eps_min, double eps_max) {
-  const double pad = 0.04 * epsilon_span(eps_min, eps_max);
   commands += "  set title " + quote("n = " + label_number(density)) + "\n";
-  commands += "  set xrange [" + number(eps_min - pad) + ":" + number(eps_max + pad) + "]\n";
+  set_epsilon_axis(commands, eps_min, eps_max);
+}
+
+void set_epsilon_axis(std::string& commands, double eps_min, double eps_max) {
+  if (eps_max == eps_min) {
+    commands += "  set xrange [" + number(eps_min - 0.02) + ":" + number(eps_min + 0.02) +
+                "]\n  set xtics (" + number(eps_min) + ")\n";
+    return;
+  }
+  const double pad = 0.04 * epsilon_span(eps_min, eps_max);
+  commands += "  set xrange [" + number(eps_min - pad) + ":" + number(eps_max + pad) +
+              "]\n  set xtics autofreq\n";
 }
 
 double sideways_shift(std::size_t index, std::size_t count, double eps_min, double eps_max) {

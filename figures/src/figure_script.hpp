@@ -92,8 +92,13 @@ std::size_t gas_colour_index(const std::string& mode, std::size_t index);
 /// points with error bars, in its symbol and colour.
 std::string gas_points(const std::string& mode, std::size_t index, const std::string& title);
 
-/// The title "n = <density>" and the ε range (the points' with 4 % margins) of one panel against ε.
+/// The title "n = <density>" and the ε axis (set_epsilon_axis) of one panel against ε.
 void set_density_panel(std::string& commands, double density, double eps_min, double eps_max);
+
+/// The ε axis of one panel: the points' range with 4 % margins; for a panel of one ε, a window of
+/// ±0.02 around it with that ε as its only tick (autoscaled, the series' sideways shifts would
+/// fill the frame and every tick read the same rounded ε).
+void set_epsilon_axis(std::string& commands, double eps_min, double eps_max);
 
 /// Sideways offset of series `index` of `count` drawn at the same ε, so that their error bars do
 /// not hide one another: a few thousandths of the panel's ε span, centred on zero.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "figure_script.hpp"
 #include "molchaos/figures/render.hpp"
@@ -21,6 +22,18 @@ std::string gas_label(const std::string& mode) {
 }
 
 using detail::add_series;
+
+// The ε axis of the panel of state (d, n): the restitutions of its rows.
+template <class Row>
+void set_panel_epsilon_axis(std::string& commands, const std::vector<Row>& rows, int d, double n) {
+  double lo = 1.0, hi = 0.0;
+  for (const Row& r : rows)
+    if (r.dimension == d && r.density == n) {
+      lo = std::min(lo, r.restitution);
+      hi = std::max(hi, r.restitution);
+    }
+  detail::set_epsilon_axis(commands, lo, hi);
+}
 
 }  // namespace
 
@@ -113,9 +126,10 @@ RenderedFigure render_contact_moments(const std::vector<validation::ContactMomen
         ++s;
       }
     // Room below the data for the key (seven entries).
-    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
-                       "\n  set autoscale\n  set offsets 0, 0, graph 0.05, graph 1.1\n" + plot +
-                       "\n";
+    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) + "\n";
+    set_panel_epsilon_axis(script.commands, rows, d, n);
+    script.commands +=
+        "  set autoscale y\n  set offsets 0, 0, graph 0.05, graph 1.1\n" + plot + "\n";
     ++p;
   }
   return detail::render(script, options);
@@ -154,8 +168,11 @@ RenderedFigure render_cooling_decomposition(
                                                                       : "9"),
                  static_cast<std::size_t>(which) + 1, titles[which]);
     }
-    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
-                       "\n  set autoscale\n" + plot + "\n";
+    // Room above the data for the key (three entries).
+    script.commands += "  set title " + detail::quote(detail::dimension_density_title(d, n)) + "\n";
+    set_panel_epsilon_axis(script.commands, rows, d, n);
+    script.commands +=
+        "  set autoscale y\n  set offsets 0, 0, graph 0.45, graph 0.05\n" + plot + "\n";
     ++p;
   }
   return detail::render(script, options);
