@@ -192,6 +192,7 @@ def main(sweep_args, repeats=30, reference_seeds=0, first_base_seed=1000, binary
     # The last fallback is the build beside this script's repository, wherever it is run from.
     binary = binary or os.environ.get("MOLCHAOS_BIN") or shutil.which("molchaos") or \
         os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "molchaos")
+    binary = shutil.which(binary) or binary  # a bare name given by --molchaos, from PATH
     if not (os.path.isfile(binary) and os.access(binary, os.X_OK)):
         raise ValueError(f"molchaos: no program at {binary}; give it with --molchaos PATH or "
                          f"MOLCHAOS_BIN")
