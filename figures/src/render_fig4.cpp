@@ -85,8 +85,8 @@ RenderedFigure render_fig4(const validation::Fig4Data& data, const RenderOptions
           "keyentry with lines linecolor rgb '#555555' linewidth 1 title 'least-squares fits'");
     }
     detail::set_density_panel(c, panel.density, eps_min, eps_max);
-    // Leave room above the data for the key.
-    // Room above the data for the key (six entries: it hid the tops of the highest bars).
+    // Room above the data for the key (six entries: at graph 0.35 it hid the tops of the
+    // highest bars).
     c += "  set autoscale y\n  set offsets 0, 0, graph 0.5, graph 0.05\n";
     std::string plot;
     for (const auto& element : elements) detail::add_plot_element(plot, element);
