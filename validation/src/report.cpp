@@ -375,9 +375,10 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
   if (file.starts_with("fig_b_of_eps"))
     return "b(ε), the velocity correlation at contact, obtained three ways: from the cooling "
            "rates of the original and the flux-shuffled gas (with the paper's coefficients and "
-           "with the suite's), and directly from the velocities at contact; the flux gas's "
-           "contact b is the control and should be zero. Look whether the cooling-rate and "
-           "contact values agree.";
+           "with the suite's), and directly from the velocities at contact, less the DSMC gas's "
+           "(molecular chaos, with the Sonine terms beyond a2 that the inversion leaves out); the "
+           "flux gas's contact b, less the DSMC gas's, is the control and should be zero. Look "
+           "whether the cooling-rate and contact values agree.";
   if (file.starts_with("fig_impact_parameter"))
     return "Impact parameter s of the colliding pairs (0 head-on, 1 grazing) as the departure of "
            "its histogram from flat, fraction · bins − 1, mean ± standard error over runs, one "
