@@ -5,15 +5,16 @@
 // lattice with Gaussian velocities, elastic relaxation without shuffle, T rescaled to 1 and the
 // clock set to 0, then the run with the shuffle; collisions counted over (t_skip, t_end].
 // Usage: reference_shuffle_frequency N DENSITY MODE SEED RELAX T_SKIP T_END
-//   MODE 0: no shuffle; 1: the paper's (i, j take the velocities of two other particles k, l drawn
-//   uniformly, assigned so that i, j separate; k, l take the post-collision v_i, v_j).
+//   MODE 0: no shuffle. 1 and 2: the paper's shuffle, i, j take the velocities of two other
+//   particles k, l drawn uniformly, assigned so that i, j separate. The paper does not say which
+//   of k, l takes which post-collision velocity: 1 exchanges pairwise (the donor whose velocity
+//   i takes gets v_i', as the engine does), 2 gives v_i' to k and v_j' to l in the order drawn.
 // Prints ω/ω_E (Henderson's g2) and the collisions counted. doc/validation.md quotes its runs.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
-#include <utility>
 #include <vector>
 
 namespace {
@@ -110,16 +111,19 @@ int main(int argc, char** argv) {
       continue;
     }
     if (t > t_skip) ++counted;
-    if (mode != 1) continue;
+    if (mode == 0) continue;
     int k, l;
     do k = uniform(rng);
     while (k == i || k == j);
     do l = uniform(rng);
     while (l == i || l == j || l == k);
-    double ax = gas.vx[k], ay = gas.vy[k], bx = gas.vx[l], by = gas.vy[l];
-    if ((ax - bx) * ex + (ay - by) * ey < 0) std::swap(ax, bx), std::swap(ay, by);
-    gas.vx[k] = gas.vx[i], gas.vy[k] = gas.vy[i], gas.vx[l] = gas.vx[j], gas.vy[l] = gas.vy[j];
-    gas.vx[i] = ax, gas.vy[i] = ay, gas.vx[j] = bx, gas.vy[j] = by;
+    const bool swapped = (gas.vx[k] - gas.vx[l]) * ex + (gas.vy[k] - gas.vy[l]) * ey < 0;
+    const int to_i = swapped ? l : k, to_j = swapped ? k : l;  // i, j then separate
+    const double vix = gas.vx[i], viy = gas.vy[i], vjx = gas.vx[j], vjy = gas.vy[j];
+    gas.vx[i] = gas.vx[to_i], gas.vy[i] = gas.vy[to_i], gas.vx[j] = gas.vx[to_j],
+    gas.vy[j] = gas.vy[to_j];
+    const int gets_vi = mode == 1 ? to_i : k, gets_vj = mode == 1 ? to_j : l;
+    gas.vx[gets_vi] = vix, gas.vy[gets_vi] = viy, gas.vx[gets_vj] = vjx, gas.vy[gets_vj] = vjy;
   }
   const double eta = M_PI * density / 4, g2 = (1 - 7 * eta / 16) / ((1 - eta) * (1 - eta));
   const double omega_enskog = 2 * density * g2 * std::sqrt(M_PI);
