@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "molchaos/sim/run.hpp"
@@ -150,29 +151,29 @@ void b_from_cooling(const ReproduceResults& R, double n, double e, BSeries& pape
 }
 
 // b of one gas from its pre-collision velocities at contact (mean dyad), inverted with its own
-// a2 and a3 = 0.
-Measurement b_at_contact(const PointResult& p) {
+// a2 and a3 = 0; none where the dyad has no error bar (one run).
+std::optional<Measurement> b_at_contact(const PointResult& p) {
+  if (p.summary.mean_dyad.error <= 0) return std::nullopt;
   theory::QuadratureOptions quad;
   quad.relative_tolerance = 1e-10;
   const auto J =
       theory::contact_integrals(k_dimension, p.summary.a2.value, theory::k_paper_dyad_factor, quad);
   const auto b = J.b_from_mean_dyad(p.summary.mean_dyad.value, p.summary.mean_dyad.error);
-  return {b.value, b.error};
+  return Measurement{b.value, b.error};
 }
 
 // b directly from the velocities at contact, less the same inversion of the DSMC gas at the
-// point. The inversion takes molecular chaos to be the Sonine form in a2 alone and leaves out the
-// dyad's a3 term, 3a3/64 (doc/validation.md): with kinetic theory's a3 = −0.0105 at ε = 0.8 a
-// shift of b by −3e-4, up to a third of the original gas's b at n = 0.05. The DSMC gas is
-// molecular chaos with every Sonine term, so the difference cancels it, as the cooling route
-// cancels its own by taking the flux gas for molecular chaos.
-void b_from_contacts(const ReproduceResults& R, const PointResult& p, double n, double e,
+// point (`chaos`). The inversion takes molecular chaos to be the Sonine form in a2 alone and
+// leaves out the dyad's a3 term, 3a3/64 (doc/validation.md): with kinetic theory's a3 = −0.0105
+// at ε = 0.8 a shift of b by −3e-4, up to a third of the original gas's b at n = 0.05. The DSMC
+// gas is molecular chaos with every Sonine term, so the difference cancels it, as the cooling
+// route cancels its own by taking the flux gas for molecular chaos.
+void b_from_contacts(const PointResult& p, const std::optional<Measurement>& chaos, double e,
                      BSeries& series) {
-  const PointResult& chaos = find_dsmc_point(R, n, e);
-  if (p.summary.mean_dyad.error <= 0 || chaos.summary.mean_dyad.error <= 0) return;
-  const Measurement b = b_at_contact(p), b_chaos = b_at_contact(chaos);
+  const std::optional<Measurement> b = b_at_contact(p);
+  if (!b || !chaos) return;
   series.restitution.push_back(e);
-  series.b.push_back({b.value - b_chaos.value, std::hypot(b.error, b_chaos.error)});
+  series.b.push_back({b->value - chaos->value, std::hypot(b->error, chaos->error)});
 }
 
 }  // namespace
@@ -188,8 +189,9 @@ void figure_b(ReproduceResults& R) {
     BSeries b_control{"contacts, flux gas − DSMC (control)", {}, {}};
     for (double e : R.config.restitutions) {
       b_from_cooling(R, n, e, b_paper, b_suite);
-      b_from_contacts(R, find_point(R, n, e, "none"), n, e, b_contact);
-      b_from_contacts(R, find_point(R, n, e, "flux"), n, e, b_control);
+      const std::optional<Measurement> b_chaos = b_at_contact(find_dsmc_point(R, n, e));
+      b_from_contacts(find_point(R, n, e, "none"), b_chaos, e, b_contact);
+      b_from_contacts(find_point(R, n, e, "flux"), b_chaos, e, b_control);
     }
     bp.series = {b_paper, b_suite, b_contact, b_control};
     R.b.panels.push_back(bp);
