@@ -13,33 +13,27 @@ mkdir -p "$out"
 printf "%-3s %-6s %-6s %6s %12s %10s %10s %8s\n" d n mode seeds coll/run ratio stderr dev/se
 for d in 2 3; do
   for density in 0.05 0.1; do
+    # Enskog's frequency at T = 1, and a run twice as long as the counted collisions need.
+    omega_enskog=$(python3 -c "
+import math
+d,n=$d,$density
+if d==2:
+    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; print(repr(2*n*g*math.sqrt(math.pi)))
+else:
+    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; print(repr(4*n*g*math.sqrt(math.pi)))")
+    t_end=$(python3 -c "print(4*$collisions/($n*$omega_enskog))")
+    t_half=$(python3 -c "print($t_end/2)")
     for mode in none paper flux; do
       ratios=()
       for seed in $(seq 1 "$seeds"); do
-        t_end=$(python3 -c "
-import math
-d,n,C,N=$d,$density,$collisions,$n
-if d==2:
-    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; w=2*n*g*math.sqrt(math.pi)
-else:
-    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; w=4*n*g*math.sqrt(math.pi)
-print(4*C/(N*w))")
         f="$out/d${d}_n${density}_${mode}_s${seed}.csv"
         "$build/molchaos" simulate --quiet --dim "$d" --particles "$n" --density "$density" \
           --restitution 1 --randomize "$mode" --seed "$seed" --t-end "$t_end" \
-          --samples-per-decade 1 --t-first-sample "$(python3 -c "print($t_end/2)")" \
-          --out "$f" 2>/dev/null
+          --samples-per-decade 1 --t-first-sample "$t_half" --out "$f" 2>/dev/null
         ratios+=("$(python3 -c "
-import math,sys
-d,n,N=$d,$density,$n
 rows=[l.split(',') for l in open('$f') if l[0].isdigit()]
 (t0,c0),(t1,c1)=[(float(r[0]),int(r[3])) for r in rows[-2:]]  # t_end/2 and t_end
-C,t=c1-c0,t1-t0
-if d==2:
-    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; w=2*n*g*math.sqrt(math.pi)
-else:
-    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; w=4*n*g*math.sqrt(math.pi)
-print(2*C/(N*t)/w, C)")")
+print(2*(c1-c0)/($n*(t1-t0))/$omega_enskog, c1-c0)")")
       done
       printf "%s\n" "${ratios[@]}" | python3 -c "
 import sys,math
