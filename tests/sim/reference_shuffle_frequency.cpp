@@ -62,7 +62,7 @@ struct Gas {
 
 int main(int argc, char** argv) {
   if (argc != 8) {
-    std::fprintf(stderr, "usage: %s N DENSITY MODE(0|1) SEED RELAX T_SKIP T_END\n", argv[0]);
+    std::fprintf(stderr, "usage: %s N DENSITY MODE(0|1|2) SEED RELAX T_SKIP T_END\n", argv[0]);
     return 2;
   }
   Gas gas;
