@@ -122,12 +122,25 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   auto differs = [&](const std::string& key, const std::string& theirs, const std::string& ours) {
     return refuse(key + " differs: checkpoint " + theirs + ", this run " + ours);
   };
-  // In order: what makes the rest unreadable first.
+  // In order: what makes the rest unreadable first (another format or build), then the
+  // checksum, which covers the head too: an edited head is refused as edited before its values
+  // are compared with this run's.
   if (field("format") != std::to_string(k_checkpoint_format))
     throw differs("format", field("format"), std::to_string(k_checkpoint_format));
   if (field("version") != k_version)
     throw refuse("written by molchaos " + field("version") + ", this is " + k_version +
                  " (a restart is exact only with the build that wrote the checkpoint)");
+  std::uint64_t size = 0, checksum = 0;
+  if (text.size() - at < 2 * sizeof size) throw refuse("truncated payload");
+  std::memcpy(&size, text.data() + at, sizeof size);
+  at += sizeof size;
+  if (size != text.size() - at - sizeof checksum)
+    throw refuse(size > text.size() - at - sizeof checksum
+                     ? "truncated payload"
+                     : "bytes after the checksum (the file was extended)");
+  std::memcpy(&checksum, text.data() + at + size, sizeof checksum);
+  if (checksum != fnv1a(std::string_view(text).substr(0, at + size)))
+    throw refuse("checksum mismatch (corrupt or edited file)");
   const ParameterInfo& dimension = *find_parameter("dimension");
   if (field("dimension") != format_value(p, dimension))
     throw differs("dimension", field("dimension"), format_value(p, dimension));
@@ -147,17 +160,6 @@ CheckpointReader read_checkpoint_file(const std::string& path, const Parameters&
   }
   *saved_t_end = saved.t_end;
 
-  std::uint64_t size = 0, checksum = 0;
-  if (text.size() - at < 2 * sizeof size) throw refuse("truncated payload");
-  std::memcpy(&size, text.data() + at, sizeof size);
-  at += sizeof size;
-  if (size != text.size() - at - sizeof checksum)
-    throw refuse(size > text.size() - at - sizeof checksum
-                     ? "truncated payload"
-                     : "bytes after the checksum (the file was extended)");
-  std::memcpy(&checksum, text.data() + at + size, sizeof checksum);
-  if (checksum != fnv1a(std::string_view(text).substr(0, at + size)))
-    throw refuse("checksum mismatch (corrupt or edited file)");
   std::string payload = text.substr(at, static_cast<std::size_t>(size));
   return CheckpointReader(std::move(payload), path);
 }

@@ -53,6 +53,11 @@ refused "--restart.*bytes after the checksum" "${args[@]}" --out b.csv --restart
 sed '0,/^restitution = 0.9$/s//restitution = 0.5/' ck >edited_head
 cmp -s ck edited_head && fail "the head of ck has no line 'restitution = 0.9'"
 refused "--restart.*checksum mismatch" "${base[@]}" --restitution 0.5 --out b.csv --restart edited_head
+# ... and so is one edited to the same value written otherwise, given to no flag (was: "parameter
+# restitution differs: checkpoint 0.900, this run 0.9").
+sed '0,/^restitution = 0.9$/s//restitution = 0.900/' ck >same_value
+cmp -s ck same_value && fail "the head of ck has no line 'restitution = 0.9'"
+refused "--restart.*checksum mismatch" simulate --out b.csv --restart same_value
 cp ck flipped
 printf '\x5a' | dd of=flipped bs=1 seek=$((size - 20)) conv=notrunc 2>/dev/null
 refused "--restart.*checksum mismatch" "${args[@]}" --out b.csv --restart flipped
