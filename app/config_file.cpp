@@ -299,14 +299,14 @@ ConfigFile read_config_file(const std::string& path) {
                                          ": longer than 16 MiB and not a result file; a file "
                                          "of options is a few lines of key = value");
       {
-        std::map<std::string, std::string> quoted_numbers;
-        ConfigItems items = read_toml(lines, path, quoted_numbers);
+        std::map<std::string, std::string> quoted_literals;
+        ConfigItems items = read_toml(lines, path, quoted_literals);
         // Comments alone set nothing either: the defaults would run in place of the meant run.
         if (items.empty()) throw UsageError("--config", path + ": no settings (comments only)");
         // A run's parameters as --write-config wrote them are a run's file like its CSV: another
         // command takes the state point from it and names what it has no option for.
         const bool run_parameters = text.starts_with(k_parameters_title);
-        return {std::move(items), run_parameters, run_parameters, {}, std::move(quoted_numbers)};
+        return {std::move(items), run_parameters, run_parameters, {}, std::move(quoted_literals)};
       }
   }
   return {};
@@ -450,7 +450,7 @@ std::string parameters_not_taken(CLI::App* cmd, const ConfigItems& items, const 
 
 void apply_config_file(CLI::App* cmd, const std::string& path) {
   if (path.empty()) return;
-  const auto [items, result_file, run_header, writer, quoted_numbers] = read_config_file(path);
+  const auto [items, result_file, run_header, writer, quoted_literals] = read_config_file(path);
   if (run_header) check_run_header_complete(items, path);
   // A table of another command (a sweep summary given to theory): its keys are that command's
   // options, which would be refused one by one as unknown, as if the file were damaged.
@@ -492,21 +492,23 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
-    // TOML types its values: "100" is a string, which an option that takes numbers would read as
-    // the number without a word where the file's writer may have meant another type.
-    if (const auto quoted = quoted_numbers.find(key); quoted != quoted_numbers.end()) {
+    // TOML types its values: "100" and "true" are strings, which an option that takes numbers
+    // or a flag would read as the number or the boolean without a word where the file's writer
+    // may have meant another type.
+    if (const auto quoted = quoted_literals.find(key); quoted != quoted_literals.end()) {
       bool takes_numbers = true;
       try {
         op->get_validator(k_number_check);
       } catch (const CLI::OptionNotFound&) {
         takes_numbers = false;
       }
-      if (takes_numbers) {
+      const bool is_flag = op->get_expected_min() == 0;
+      if (takes_numbers || is_flag) {
         std::string bare;
         for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
         throw UsageError("--config", quoted->second + ": key '" + key + "': " + op->get_name() +
-                                         " takes a number, and the value is a string in quotes; "
-                                         "write the number bare (" +
+                                         (is_flag ? " takes true or false" : " takes a number") +
+                                         ", and the value is a string in quotes; write it bare (" +
                                          key + " = " +
                                          (values.size() == 1 ? bare : "[" + bare + "]") + ")");
       }

@@ -40,7 +40,7 @@ struct ConfigFile {
   std::string writer;
   /// A TOML file's keys whose value is a string that reads as a number ("100"), with the place
   /// of each ("path line N"): refused for an option that takes numbers.
-  std::map<std::string, std::string> quoted_numbers;
+  std::map<std::string, std::string> quoted_literals;
 };
 
 /// Reads a TOML file, a result CSV's header, an H5MD trajectory's parameters, an extended XYZ

@@ -126,16 +126,17 @@ bool reads_as_number(const std::string& text) {
 }
 
 // One TOML value: a string (toml_string), or a bare number/boolean. A bare word is no TOML value
-// (randomize = paper): refused, naming the key, where quotes are meant. `quoted_number` is set
-// where the value is a string that reads as a number.
+// (randomize = paper): refused, naming the key, where quotes are meant. `quoted_literal` is set
+// where the value is a string that reads as a number or a boolean.
 std::string toml_scalar(const std::string& text, const std::string& where, const std::string& key,
-                        bool& quoted_number) {
+                        bool& quoted_literal) {
   if (text.empty()) throw UsageError("--config", where + ": missing value");
   if (text.front() == '{')
     throw UsageError("--config", where + ": inline tables are not used; write key = value lines");
   if (text.front() == '"' || text.front() == '\'') {
     std::string value = toml_string(text, where);
-    quoted_number = quoted_number || (reads_as_number(value) && !beyond_toml_integers(value));
+    quoted_literal = quoted_literal || value == "true" || value == "false" ||
+                     (reads_as_number(value) && !beyond_toml_integers(value));
     return value;
   }
   if (text.front() == '[')
@@ -166,7 +167,7 @@ void track_quote(char& quote, bool& escaped, char c) {
 
 // Splits at the top-level commas of an array's inside (commas inside strings are kept).
 std::vector<std::string> toml_array(const std::string& inside, const std::string& where,
-                                    const std::string& key, bool& quoted_number) {
+                                    const std::string& key, bool& quoted_literal) {
   std::vector<std::string> values;
   std::string item;
   char quote = 0;
@@ -176,7 +177,7 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
       // An empty element ([1,, 2]) is no TOML: dropping it would run the list without a word.
       if (trim(item).empty())
         throw UsageError("--config", where + ": an empty element in an array");
-      values.push_back(toml_scalar(trim(item), where, key, quoted_number));
+      values.push_back(toml_scalar(trim(item), where, key, quoted_literal));
       item.clear();
       continue;
     }
@@ -184,7 +185,7 @@ std::vector<std::string> toml_array(const std::string& inside, const std::string
     item += c;
   }
   // A trailing comma is TOML ([1, 2,]); an empty array ([]) holds no element.
-  if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where, key, quoted_number));
+  if (!trim(item).empty()) values.push_back(toml_scalar(trim(item), where, key, quoted_literal));
   return values;
 }
 
@@ -211,7 +212,7 @@ bool beyond_toml_integers(const std::string& text) {
 }
 
 ConfigItems read_toml(std::istream& in, const std::string& path,
-                      std::map<std::string, std::string>& quoted_numbers) {
+                      std::map<std::string, std::string>& quoted_literals) {
   ConfigItems items;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -226,17 +227,17 @@ ConfigItems read_toml(std::istream& in, const std::string& path,
     if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
       key = key.substr(1, key.size() - 2);
     const std::string value = trim(text.substr(eq + 1));
-    bool quoted_number = false;
+    bool quoted_literal = false;
     if (!value.empty() && value.front() == '[') {
       if (value.back() != ']')
         throw UsageError("--config", where + ": an array must close on its line");
       items.emplace_back(key,
-                         toml_array(value.substr(1, value.size() - 2), where, key, quoted_number));
+                         toml_array(value.substr(1, value.size() - 2), where, key, quoted_literal));
     } else {
       items.emplace_back(key,
-                         std::vector<std::string>{toml_scalar(value, where, key, quoted_number)});
+                         std::vector<std::string>{toml_scalar(value, where, key, quoted_literal)});
     }
-    if (quoted_number) quoted_numbers.emplace(key, where);
+    if (quoted_literal) quoted_literals.emplace(key, where);
   }
   return items;
 }

@@ -14,12 +14,12 @@ namespace molchaos::app {
 
 /// The items of a TOML file, in file order, each value as its option reads it (strings without
 /// quotes); throws UsageError("--config", ...) naming `path` and the line of a syntax error.
-/// `quoted_numbers` receives each key whose value (or an element of it) is a string that reads
-/// as a number ("100"; not one beyond TOML's integers), with its place ("path line N"): TOML's
-/// types are lost in the items, and an option that takes numbers refuses such a string
-/// (apply_config_file).
+/// `quoted_literals` receives each key whose value (or an element of it) is a string that reads
+/// as a number ("100"; not one beyond TOML's integers) or a boolean ("true"), with its place
+/// ("path line N"): TOML's types are lost in the items, and an option that takes numbers or a
+/// flag refuses such a string (apply_config_file).
 ConfigItems read_toml(std::istream& in, const std::string& path,
-                      std::map<std::string, std::string>& quoted_numbers);
+                      std::map<std::string, std::string>& quoted_literals);
 
 /// Whether `text` is an unsigned integer beyond 2^63 − 1, which TOML's signed 64-bit integers
 /// cannot hold: written in quotes (half of all seeds), a string of digits that is no mistaken

@@ -283,15 +283,19 @@ refused "--config: escape.csv: key 'randomize': --randomize: unknown value 'pa\\
 refused "--config: binary.cfg: not a text file .*TOML file, a result CSV, an extended XYZ file, an H5MD trajectory" \
   simulate --config binary.cfg
 # TOML types its values: a bare word is no value (was: read as the string), a quoted number is a
-# string, refused for an option that takes a number (was: read as the number).
+# string, refused for an option that takes a number (was: read as the number), and so is a quoted
+# boolean for a flag (was: read as the boolean).
 printf 'particles = 100\nrandomize = paper\n' >bare.toml
 refused "--config: bare.toml line 2: key 'randomize': 'paper' is no TOML value: a string is written in quotes \\(randomize = \"paper\"\\)" \
   simulate --config bare.toml
 printf 'density = [0.1, none]\n' >bare_list.toml
 refused "--config: bare_list.toml line 1: key 'density': 'none' is no TOML value" sweep --config bare_list.toml
 printf 'randomize = "paper"\nparticles = "100"\n' >quoted.toml
-refused "--config: quoted.toml line 2: key 'particles': --particles takes a number, and the value is a string in quotes; write the number bare \\(particles = 100\\)" \
+refused "--config: quoted.toml line 2: key 'particles': --particles takes a number, and the value is a string in quotes; write it bare \\(particles = 100\\)" \
   simulate --config quoted.toml
+printf 'contacts = "true"\n' >quoted_flag.toml
+refused "--config: quoted_flag.toml line 1: key 'contacts': --contacts takes true or false, and the value is a string in quotes; write it bare \\(contacts = true\\)" \
+  simulate --config quoted_flag.toml
 printf 'density = [0.1, "0.2"]\n' >quoted_list.toml
 refused "--config: quoted_list.toml line 1: key 'density': --density takes a number" sweep --config quoted_list.toml
 # A seed beyond 2^63 - 1, which a TOML integer cannot hold (was: written bare, which strict TOML
