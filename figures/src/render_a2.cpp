@@ -1,6 +1,6 @@
 // a2(ε), the second Sonine coefficient of the homogeneous cooling state, one panel per density:
 // the MD gases and DSMC (points, mean ± standard error over runs) against the first-Sonine a2 the
-// paper quotes (van Noije & Ernst, eq. a2linD; dashed) and the improved a2 with a2² and a3 (solid).
+// paper quotes (van Noije & Ernst, Eq. (25); dashed) and the improved a2 with a2² and a3 (solid).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -63,7 +63,7 @@ RenderedFigure render_a2(const validation::A2Data& data, const RenderOptions& op
       script.data.emplace_back(prefix + "_theory", theory);
       detail::add_plot_element(plot, block +
                                          " using 1:2 with lines linecolor rgb 'black' dashtype "
-                                         "(8,5) linewidth 1.2 title 'first Sonine (eq. a2linD)'");
+                                         "(8,5) linewidth 1.2 title 'first Sonine (Eq. (25))'");
       detail::add_plot_element(plot, block +
                                          " using 1:3 with lines linecolor rgb 'black' linewidth "
                                          "1.2 title 'with a_2^2 and a_3'");

@@ -312,7 +312,7 @@ BOOST_AUTO_TEST_CASE(initial_cooling_rate_is_mu2_at_a2_zero) {
 }
 
 // The scaled homogeneous cooling state's a2 against the first Sonine approximation (van Noije &
-// Ernst; the paper's eq. a2linD for d = 2). Not asserted equal (the first Sonine approximation is
+// Ernst; the paper's Eq. (25) for d = 2). Not asserted equal (the first Sonine approximation is
 // an approximation): the difference is reported. Asserted: the DSMC a2 is resolved (error below a
 // fifth of |a2|) and has the theory's sign, i.e. the HCS is measurably non-Maxwellian.
 BOOST_AUTO_TEST_CASE(cooling_state_a2_against_first_sonine) {

@@ -54,7 +54,7 @@ BOOST_AUTO_TEST_CASE(a2_special_values) {
   // ε → 0: 16 / (9 + 24 d).
   BOOST_TEST(std::abs(a2_first_sonine(2, 1e-12) - 16.0 / 57.0) <= 1e-10);
   BOOST_TEST(std::abs(a2_first_sonine(3, 1e-12) - 16.0 / 81.0) <= 1e-10);
-  // Paper's eq. a2linD at ε = 0.9 written out.
+  // Paper's Eq. (25) at ε = 0.9 written out.
   const double e = 0.9;
   BOOST_TEST(std::abs(a2_first_sonine(2, e) - 16 * (1 - e) * (1 - 2 * e * e) /
                                                   (57 - 25 * e + 30 * e * e * (1 - e))) <= 1e-16);

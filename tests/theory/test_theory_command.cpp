@@ -195,14 +195,14 @@ BOOST_AUTO_TEST_CASE(b_where_mu2_is_not_resolved_is_refused) {
   BOOST_TEST(std::stod(m[1]) > 2.0 / 3.0 - 1e-12);
 }
 
-// In d = 3 the paper's eq. mu2a2b (2D Sonine polynomial, eq. Son2) and the ω0 built on it make no
+// In d = 3 the paper's Eq. (21) (2D Sonine polynomial, Eq. (19)) and the ω0 built on it make no
 // claim: no verdict ("paper 1.253314 computed 2.5066 … NOT reproduced" before).
 BOOST_AUTO_TEST_CASE(two_dimensional_prefactors_not_applicable_in_three_d) {
   const std::string text = run("--dim 3").text;
   // Each row gives its own reason (the ω0 row once gave μ2's).
   for (const auto& [row, why] :
        {std::pair{"mu2(0,0)/(1-eps^2)", "not applicable (the paper's formula is for d = 2"},
-        std::pair{"omega0 prefactor", "not applicable (the paper's omega0, eq. A, is built on"}}) {
+        std::pair{"omega0 prefactor", "not applicable (the paper's omega0, Eq. (24), is built on"}}) {
     const std::string line = line_of(text, row);
     BOOST_TEST_INFO(line);
     BOOST_TEST(line.find(why) != std::string::npos);

@@ -4,7 +4,7 @@ evaluates numerically: the moments mu_p (p = 2, 4, 6) term by term in a2, a3 and
 averages over colliding pairs, and the coefficients built from them. Run at build time: it prints
 the results and writes the C++ header that the tests and `molchaos theory` read.
 
-Definition (paper eq. defmu2, generalised to d dimensions and moment p):
+Definition (paper Eq. (20), generalised to d dimensions and moment p):
   mu_p = -1/2 int dc1 dc2 de Theta(-c12.e) |c12.e| f1 f2 [1 + b (k (c1.e)(c2.e) - c1.c2)]
          Delta(c1^p + c2^p)
 with f = phi(c)(1 + a2 S2(c^2) + a3 S3(c^2)), phi = pi^{-d/2} exp(-c^2), S2, S3 the

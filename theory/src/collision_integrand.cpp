@@ -65,7 +65,7 @@ void CentreOfMassSum::accumulate(double u, double rho, double scale, TermSums& s
                                  TermSums& magnitudes) const {
   const int d = spec_.dimension;
   const double g[3] = {-u, rho, 0.0};
-  const double kick = 0.5 * (1.0 + spec_.restitution) * g[0];  // collision rule, paper eq. coll
+  const double kick = 0.5 * (1.0 + spec_.restitution) * g[0];  // collision rule, paper Eqs. (5), (6)
   const int p = spec_.moment;
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const auto& C = nodes_[k];
@@ -78,7 +78,7 @@ void CentreOfMassSum::accumulate(double u, double rho, double scale, TermSums& s
     }
     const double c1n = C[0] + 0.5 * g[0], c2n = C[0] - 0.5 * g[0];  // normal components
     const double normal_product = c1n * c2n;
-    const double dyad = spec_.dyad_factor * normal_product - c1c2;  // D̂:c1c2, paper eq. c1Dc2
+    const double dyad = spec_.dyad_factor * normal_product - c1c2;  // D̂:c1c2, paper Eq. (16)
     double observable = 1.0;
     switch (spec_.observable) {
       case Observable::moment_change: {

@@ -25,7 +25,7 @@
 namespace molchaos::theory::detail {
 namespace {
 
-// μ_p carries −½ (paper eq. defmu2); the contact integrals are plain sums over colliding pairs.
+// μ_p carries −½ (paper Eq. (20)); the contact integrals are plain sums over colliding pairs.
 // Both carry |S^{d−1}| (e fixed along x) and π^{−d} (the Maxwellians' normalisation).
 double prefactor(const IntegrandSpec& spec) {
   const double sign_half = spec.observable == Observable::moment_change ? -0.5 : 1.0;

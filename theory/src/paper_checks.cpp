@@ -44,16 +44,16 @@ double division_rounding(double num, double den) {
   return std::abs(std::fma(q, den, -num) / den);
 }
 
-// Eq. mu2a2b and the ω0 of eq. A built on it are the paper's integral for disks: its Sonine
-// polynomial is the two-dimensional one (eq. Son2) and ½√(2π) the d = 2 value of μ2(0,0)/(1 − ε²).
-// In d = 3 they make no claim to test. Eq. tau0 and eq. TDef are written in d = 3 form (σ², 1/3)
+// Eq. (21) and the ω0 of Eq. (24) built on it are the paper's integral for disks: its Sonine
+// polynomial is the two-dimensional one (Eq. (19)) and ½√(2π) the d = 2 value of μ2(0,0)/(1 − ε²).
+// In d = 3 they make no claim to test. Eq. (22) and Eq. (10) are written in d = 3 form (σ², 1/3)
 // and are tested in either d.
 constexpr const char* k_mu2_two_dimensional =
-    "not applicable (the paper's formula is for d = 2: eq. mu2a2b with the 2D Sonine polynomial, "
-    "eq. Son2)";
+    "not applicable (the paper's formula is for d = 2: Eq. (21) with the 2D Sonine polynomial, "
+    "Eq. (19))";
 constexpr const char* k_omega0_two_dimensional =
-    "not applicable (the paper's omega0, eq. A, is built on the d = 2 value of mu2(0,0) in eq. "
-    "mu2a2b)";
+    "not applicable (the paper's omega0, Eq. (24), is built on the d = 2 value of mu2(0,0) in Eq. "
+    "(21))";
 
 PaperCheck two_dimensional_row(int dimension, PaperCheck row, const char* why) {
   if (dimension != 2) {
@@ -69,7 +69,7 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
   require_dimension(dimension);
   std::vector<PaperCheck> rows;
   const double d = dimension;
-  // μ2(0,0)/(1 − ε²): paper prints ½√(2π) (eq. mu2a2b, stated for disks). Computed by quadrature;
+  // μ2(0,0)/(1 − ε²): paper prints ½√(2π) (Eq. (21), stated for disks). Computed by quadrature;
   // the division by 1 − ε² = 3/4 (exact) adds its rounding.
   const double eps = 0.5;
   const Estimate base = collision_moment(dimension, 2, eps, 0.0, 0.0, k_paper_dyad_factor, options);
@@ -80,9 +80,9 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
   rows.push_back(two_dimensional_row(
       dimension,
       {"mu2(0,0)/(1-eps^2)", paper_mu2, mu2_value, mu2_error,
-       verdict(paper_mu2, mu2_value, mu2_error), "quadrature of eq. defmu2 at a2 = b = 0"},
+       verdict(paper_mu2, mu2_value, mu2_error), "quadrature of Eq. (20) at a2 = b = 0"},
       k_mu2_two_dimensional));
-  // Prefactor of eq. tau0, 1/tau0 = c g2 sigma^{d-1} n sqrt(2 T0/m) mu2: derived c = 1/d.
+  // Prefactor of Eq. (22), 1/tau0 = c g2 sigma^{d-1} n sqrt(2 T0/m) mu2: derived c = 1/d.
   const double tau0_c = 1.0 / d, tau0_error = division_rounding(1.0, d);
   rows.push_back({"tau0 prefactor c in 1/tau0 = c g2 n sqrt(2T0) mu2", k_paper_tau0_prefactor,
                   tau0_c, tau0_error, verdict(k_paper_tau0_prefactor, tau0_c, tau0_error),
@@ -98,7 +98,7 @@ std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions&
        omega_error, verdict(k_paper_omega0_prefactor, omega_c, omega_error),
        "c = 1/2 (d = 2), 2/3 (d = 3)"},
       k_omega0_two_dimensional));
-  // Temperature definition, eq. TDef: T = m/(c n) ∫ v² f; derived c = d (an exact integer).
+  // Temperature definition, Eq. (10): T = m/(c n) ∫ v² f; derived c = d (an exact integer).
   rows.push_back({"temperature definition c in T = m/(c n) int v^2 f", k_paper_temperature_divisor,
                   d, 0.0, verdict(k_paper_temperature_divisor, d, 0.0),
                   "equipartition in d dimensions: c = d"});

@@ -198,6 +198,8 @@ void ansatz_claims(CorrelationStudy& S) {
         {f.beta_perp.value + 0.5 * f.beta_par.value, std::sqrt(std::max(var, 0.0))});
   }
   const double p1 = chi_square_p_value(chi1, 3 * points), p2 = chi_square_p_value(chi2, 2 * points);
+  S.two_amplitude_chi2 = chi2;
+  S.two_amplitude_dof = 2 * points;
   S.claims.push_back(
       {"one b (printed dyad 3 rr - U) fixes all four shifts at contact (P, Q, "
        "omega, energy loss)",

@@ -15,6 +15,7 @@
 #include "molchaos/sim/atomic_file.hpp"
 #include "molchaos/theory/hydrodynamics.hpp"
 #include "molchaos/theory/sonine.hpp"
+#include "molchaos/validation/pair_correlations.hpp"
 #include "molchaos/validation/verdict.hpp"
 #include "reproduce_steps.hpp"
 
@@ -152,7 +153,7 @@ std::string fig4_fits_csv(const ReproduceResults& r) {
 std::string a2_csv(const ReproduceResults& r) {
   std::string s = header_lines(r);
   s += "# a2 of a gas (source none, paper, flux: MD; dsmc): mean ± standard error over runs of "
-       "each run's a2 averaged over its Haff-fit window; first_sonine (eq. a2linD) and a2_a3 "
+       "each run's a2 averaged over its Haff-fit window; first_sonine (Eq. (25)) and a2_a3 "
        "(with a2^2 and a3): the Sonine theory, a2_err its quadrature error\n";
   s += "dimension,density,restitution,source,a2,a2_err\n";
   const int d = r.a2.dimension;
@@ -189,7 +190,10 @@ std::string summary_section(const ReproduceResults& r) {
                      c.source == ClaimSource::paper ? "paper " : "suite ", ++k, c.statement,
                      c.verdict, c.deciding);
   s += fmt::format(
-      "\n*paper*: a claim of the paper; *suite*: a finding of this suite beyond it. Verdict rule "
+      "\n*paper*: a claim of the paper; *suite*: a finding of this suite beyond it. Verdicts: "
+      "*reproduced*, the suite's numbers agree with the claim by the rule below; *not "
+      "reproduced*, its simulations disagree with a claim about simulated gases; *contradicted*, "
+      "its exact computation differs from a formula or number the paper prints. Verdict rule "
       "(every row below): a number agrees with the one it is compared with when they differ by "
       "at most {:g} combined standard errors (theory: its quadrature error; simulation: the "
       "standard error over independent runs); each row names the rule it used. A claim over "
@@ -222,21 +226,26 @@ std::string setup_section(const ReproduceResults& r, const std::string& command)
   const std::string stages =
       c.target_relative_error > 0.0
           ? fmt::format(
-                "then, in stages, the seeds a relative standard error of A of {:.2f} % "
-                "needs at the scatter per run of a smooth model of each gas over ε, and "
-                "more where a point's own error was still above it (the runs column; the "
-                "largest left is {})",
+                "Runs are then added in stages until the relative standard error of A reaches "
+                "{:.2f} %: first as many as a smooth model of each gas's scatter per run over ε "
+                "asks for, then more at any point still above the target (the runs column; the "
+                "largest relative standard error left is {}).",
                 100.0 * c.target_relative_error, largest_text)
-          : fmt::format("and no further stages (the largest relative standard error of A is {})",
+          : fmt::format("No runs are added (the largest relative standard error of A is {}).",
                         largest_text);
   s += fmt::format(
-      "d = 2, N = {}, densities {}, restitutions {}..{} ({} values), {} seeds per point "
-      "(the same {} relaxed initial states for every ε and mode at one density), {}, runs of {} "
-      "kinetic-theory τ0; A from the integrated form of Haff's law over each run's window (the "
-      "estimator finding below). Modes: `none` (original gas), `paper` (the paper's shuffle), "
-      "`flux` (flux-weighted shuffle).\n\n",
-      c.particles, fmt::join(c.densities, ", "), c.restitutions.front(), c.restitutions.back(),
-      c.restitutions.size(), c.seeds, c.seeds, stages, c.t_end_in_tau0);
+      "d = 2, N = {}, densities {}, {} restitutions from {} to {}. Each point starts with {} "
+      "runs, whose {} relaxed initial states are the same for every ε and gas at one density. "
+      "{} Each run lasts {} kinetic-theory τ0; A comes from the integrated form of Haff's law "
+      "over the run's window (the estimator finding below).\n\n"
+      "The gases: `none`, the original inelastic gas; `paper`, the paper's shuffle (after each "
+      "collision the pair takes the velocities of two particles drawn uniformly, in the order "
+      "that makes it separate); `flux`, the flux-weighted shuffle (the donor pair drawn with "
+      "weight |(v_k − v_l)·e|, the collision flux of a gas without correlations, so that an "
+      "elastic gas stays in equilibrium); DSMC, the Enskog–Boltzmann equation solved by direct "
+      "simulation Monte Carlo (velocities only, molecular chaos by construction).\n\n",
+      c.particles, fmt::join(c.densities, ", "), c.restitutions.size(), c.restitutions.front(),
+      c.restitutions.back(), c.seeds, c.seeds, stages, c.t_end_in_tau0);
   if (r.failed_runs > 0) {
     s += fmt::format("**{} run(s) failed**:\n\n", r.failed_runs);
     for (const auto& f : r.failures) s += "- " + f + "\n";
@@ -389,7 +398,7 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
     return "a2(ε), the second Sonine coefficient, one panel per density: the original, the "
            "paper-shuffled, the flux-shuffled and the DSMC gas (mean ± standard error over runs "
            "of the a2 averaged over the Haff-fit window), the first-Sonine a2 the paper quotes "
-           "(eq. a2linD, dashed) and the improved a2 with a2² and a3 (solid). Look at which line "
+           "(Eq. (25), dashed) and the improved a2 with a2² and a3 (solid). Look at which line "
            "the DSMC circles follow where the two lines part (small ε), and whether the MD gases' "
            "a2 lies on the DSMC gas's.";
   if (file.starts_with("fig_snapshot"))
@@ -486,15 +495,20 @@ std::string animation_line(const ReproduceResults& r, const std::vector<std::str
 
 // The paper's central question in one paragraph: does one number b describe the two-particle
 // distribution at contact? Its two routes to b, and the two-amplitude form's, from the
-// correlation study's global tests.
+// correlation study's global tests, and whether those two amplitudes fit every contact moment.
 std::string two_routes_headline(const CorrelationStudy& c) {
   if (c.b_routes.points == 0) return "";
+  const double p = chi_square_p_value(c.two_amplitude_chi2, c.two_amplitude_dof);
   return fmt::format(
-      "**The paper's b from the cooling rate and at contact.**\n\n"
+      "**b, the velocity correlation of the paper's two-particle distribution at contact (its "
+      "Eq. (14)), measured two ways by this suite** (the paper gives no measured b):\n\n"
       "- The printed ansatz, one b: {}\n"
       "- One amplitude for the longitudinal and one for the transverse velocity correlation at "
-      "contact, in place of the printed dyad: {}\n\n",
-      c.b_routes.statement, c.beta_par_routes.statement);
+      "contact, in place of the printed dyad: {} The same two amplitudes fitted to all four "
+      "contact moments at once give chi2 = {:.1f} for {} dof (p = {:.2g}): {}.\n\n",
+      c.b_routes.statement, c.beta_par_routes.statement, c.two_amplitude_chi2,
+      c.two_amplitude_dof, p,
+      p >= k_global_p_threshold ? "they fit" : "they do not fit; closer than one b, not right");
 }
 
 }  // namespace

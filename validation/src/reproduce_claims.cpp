@@ -72,7 +72,7 @@ double largest_abs_difference(const std::vector<ComparisonRow>& rows) {
 }  // namespace
 
 Claim claim_mu2_coefficient_a2(const ReproduceResults& R) {
-  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient 3/16 of a2 (eq. mu2a2b)", "", "",
+  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient 3/16 of a2 (Eq. (21))", "", "",
           coefficient_rows(R, {"mu2 coefficient of a2"})};
   c.verdict = verdict_of_all(c.rows, "reproduced", "contradicted");
   const auto& row = c.rows.at(0);
@@ -82,7 +82,7 @@ Claim claim_mu2_coefficient_a2(const ReproduceResults& R) {
 }
 
 Claim claim_mu2_coefficient_b(const ReproduceResults& R) {
-  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient −63/40 of b (eq. mu2a2b)", "", "",
+  Claim c{ClaimSource::paper, "μ2/μ2(0,0) has the coefficient −63/40 of b (Eq. (21))", "", "",
           coefficient_rows(R, {"mu2 coefficient of b"})};
   c.verdict = verdict_of_all(c.rows, "reproduced", "contradicted");
   const auto& row = c.rows.at(0);
@@ -122,6 +122,10 @@ Claim claim_prefactors(const ReproduceResults&) {
   c.verdict = differing.empty() ? "reproduced" : "contradicted";
   c.deciding = fmt::format("{} of {} differ: {}", differing.size(), c.rows.size(),
                            fmt::join(differing, "; "));
+  // Each printed 1/3 or 3 is the d = 3 value (1/d, d), taken with the d = 2 μ2 (doc/theory.md).
+  if (!differing.empty())
+    c.deciding += "; the paper's 1/3 and 3 are the values for spheres (1/d and d at d = 3), "
+                  "combined with the μ2 of disks";
   return c;
 }
 
@@ -199,9 +203,9 @@ std::string haff_deciding(const HaffComparison& h) {
 Claim claim_randomized_follows_haff(const ReproduceResults& R) {
   HaffComparison h = compare_with_haff(R, "paper");
   Claim c{ClaimSource::paper,
-          "the randomized gas (paper's shuffle) cools by Haff's law (the paper fits τ0; tested "
-          "here with kinetic theory's τ0, which the molecular chaos the shuffle is to restore "
-          "implies)",
+          "the randomized gas (paper's shuffle) is a gas without velocity correlations: it cools "
+          "by Haff's law with kinetic theory's τ0, A = A_rand (Eq. (26) takes it so; the paper's "
+          "Fig. 3 fits τ0, and the Haff form with a fitted τ0 is not what this row tests)",
           h.test.holds() ? "reproduced" : "not reproduced", haff_deciding(h), std::move(h.rows)};
   return c;
 }
@@ -460,10 +464,13 @@ Claim finding_b_two_ways(const ReproduceResults& R) {
       "{}: χ² of b_cooling = b_contact = {:.1f} for {} points (p = {:.2g}); fitted ratio "
       "b_cooling/b_contact = {:.3f} ± {:.3f} (χ² = {:.1f} for {} dof); b_contact is the original "
       "gas's contact b less the DSMC gas's; the control, the flux gas's less the DSMC gas's (zero "
-      "under molecular chaos): χ² = {:.1f} for {} points (p = {:.2g})",
+      "under molecular chaos): χ² = {:.1f} for {} points (p = {:.2g}), {}",
       equal ? "consistent" : "inconsistent", fit.chi2_of_equal, fit.points, fit.p_equal,
       fit.ratio.value, fit.ratio.error, fit.chi2_of_fit, fit.points - 1, control.chi2,
-      control.points, control.p());
+      control.points, control.p(),
+      control.holds() ? "zero within the rule"
+                      : "not zero by the rule: the flux gas or the contact route carries a "
+                        "small correlation of that size");
   return c;
 }
 

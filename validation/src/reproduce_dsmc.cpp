@@ -80,12 +80,12 @@ std::string a2_verdict(const char* name, const GlobalTest& t) {
 
 }  // namespace
 
-// The paper quotes van Noije and Ernst's first-Sonine a2(ε) (eq. a2linD); DSMC solves the same
+// The paper quotes van Noije and Ernst's first-Sonine a2(ε) (Eq. (25)); DSMC solves the same
 // kinetic equation without the Sonine truncation, so it tests that a2 and the improved one
 // (a2 with its square and a3, theory/sonine_hcs.hpp) at every Fig. 4 point.
 Claim finding_dsmc_a2_against_sonine(const ReproduceResults& R) {
   Claim c{ClaimSource::suite,
-          "the first-Sonine a2(ε) the paper quotes (eq. a2linD) and the improved a2 (with a2² "
+          "the first-Sonine a2(ε) the paper quotes (Eq. (25)) and the improved a2 (with a2² "
           "and a3) against DSMC",
           "beyond the paper",
           "",

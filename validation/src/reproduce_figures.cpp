@@ -98,7 +98,7 @@ A2Series a2_series(const ReproduceResults& R, double n, const std::string& mode)
 
 }  // namespace
 
-// The gases' a2 against the first-Sonine a2 the paper quotes (eq. a2linD) and the improved a2
+// The gases' a2 against the first-Sonine a2 the paper quotes (Eq. (25)) and the improved a2
 // (a2² and a3, theory/sonine_hcs.hpp); the theory does not depend on the density.
 void figure_a2(ReproduceResults& R) {
   const auto& cfg = R.config;

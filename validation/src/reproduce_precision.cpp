@@ -119,11 +119,10 @@ Claim finding_estimator_precision(const ReproduceResults& R) {
       "{} against the least-squares fit on the same runs; largest SE(A)/A "
       "of a Fig. 4 point {}; the correlation over seeds of A in two gases "
       "from the same relaxed states, (none, flux): {}, (paper, flux): {} "
-      "(pairing would shrink the variance of a difference by the fraction r "
-      "at most, so the gases get seeds apart); the Fig. 4 slopes' variance "
-      "by the jackknife over seeds, which the ε points of a gas share, over "
-      "the fits' own, which treat the points as independent (mean over the "
-      "fits): {}",
+      "(pairing the gases' runs would shrink the variance of a difference by the fraction r "
+      "at most, so differences between gases are taken as of independent runs); the Fig. 4 "
+      "slopes' variance by the jackknife over seeds (which the ε points of a gas share) is {} "
+      "the fits' own (which treat the points as independent), mean over the fits",
       deciding,
       largest > 0.0 ? fmt::format("{:.3f} %", 100.0 * largest)
                     : fmt::format("not measured ({})", k_one_run),

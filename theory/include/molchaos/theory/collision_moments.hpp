@@ -1,5 +1,5 @@
 // The collision moments μ_p of the Enskog–Boltzmann collision integral with the paper's
-// correlated two-particle distribution at contact (its eqs. f2atsigma, fSonin, defmu2),
+// correlated two-particle distribution at contact (its Eqs. (17), (18), (20)),
 // evaluated by quadrature of the defining integral, and their expansion in a2, a3 and b.
 //
 //   μ_p = −½ ∫dc1 ∫dc2 ∫de Θ(−c12·e)|c12·e| f̃(c1) f̃(c2) [1 + b(κ(c1·e)(c2·e) − c1·c2)]
@@ -8,7 +8,7 @@
 // f̃(c) = π^{−d/2} e^{−c²}[1 + a2 S2(c²) + a3 S3(c²)], κ the dyad factor (3 as printed; d makes
 // the dyad traceless in d dimensions), Δ the change of c1^p + c2^p in a collision with
 // restitution ε, computed by applying the collision rule. g2(σ) is kept outside μ_p, as in the
-// paper's eq. tau0.
+// paper's Eq. (22).
 //
 // Reduction (derived in doc/theory.md): e is fixed along x by rotational invariance (factor
 // |S^{d−1}|); c1 = C + g/2, c2 = C − g/2 (unit Jacobian); the centre-of-mass velocity C enters
@@ -112,7 +112,7 @@ ExpansionTable expand_collision_moment(int dimension, int p, double restitution,
 /// μ4 = (d + 2)(1 + a2) μ2 of the scaled homogeneous cooling state, with μ2, μ4 linearised in a2.
 Estimate a2_from_moments(int dimension, double restitution, const QuadratureOptions& options = {});
 
-/// Averages over colliding pairs at contact. With the ansatz of eq. f2atsigma the collision-rate
+/// Averages over colliding pairs at contact. With the ansatz of Eq. (17) the collision-rate
 /// weighted mean of the dyad D = κ(c1·e)(c2·e) − c1·c2 is
 ///     ⟨D⟩_coll(b) = (J_D + b J_DD)/(J_1 + b J_D),   J_X = ∫dc1 dc2 de Θ(−c12·e)|c12·e| f̃ f̃ X,
 /// so a measured ⟨D⟩_coll determines b directly, independently of the cooling rate.

@@ -1,5 +1,5 @@
 // How the paper's correlated pair distribution at contact, f2 = f f g2 [1 + b D̂:c1c2]
-// (eqs. f2genform, f2atsigma; D̂ = κ ee − U), shows in averages over colliding pairs: to first
+// (Eqs. (14), (17); D̂ = κ ee − U), shows in averages over colliding pairs: to first
 // order in b and a2 (with the a2·b cross term), the coefficients that turn measured contact
 // statistics into b. Velocities are reduced, c = v/√(2T); "colliding" means approaching pairs at
 // contact weighted by the collision rate Θ(−c12·e)|c12·e|.

@@ -1,5 +1,5 @@
 // The values of the paper's correlation coefficient b = χ(σ)/g2(σ) for which its ansatz
-// f2 = f f g2 [1 + b D̂:c1c2] (eq. f2atsigma) describes a gas: the quantities f2 feeds into the
+// f2 = f f g2 [1 + b D̂:c1c2] (Eq. (17)) describes a gas: the quantities f2 feeds into the
 // suite (collision rate, cooling rate μ2, density of grazing collisions) stay positive.
 // Derivation in doc/theory.md, section 6.
 #pragma once

@@ -28,9 +28,9 @@ std::optional<bool> verdict(std::optional<double> paper, double computed, double
 /// The coefficient rows of μ2/μ2(0,0) ("a2", "a2^2", "b", "a2*b", "a2^2*b") against the paper.
 std::vector<PaperCheck> coefficient_checks(const ExpansionTable& table);
 
-/// Prefactors of the paper's eqs. mu2a2b, tau0 and A (ω0) against the derivation in
-/// cooling.hpp, for dimension d (the paper simulates d = 2). In d = 3 the rows built on eq.
-/// mu2a2b (μ2(0,0) and ω0), derived with the 2D Sonine polynomial, carry no verdict and the
+/// Prefactors of the paper's Eqs. (21), (22) and (24) (ω0) against the derivation in
+/// cooling.hpp, for dimension d (the paper simulates d = 2). In d = 3 the rows built on Eq.
+/// (21) (μ2(0,0) and ω0), derived with the 2D Sonine polynomial, carry no verdict and the
 /// note "not applicable (the paper's formula is for d = 2 …)".
 std::vector<PaperCheck> prefactor_checks(int dimension, const QuadratureOptions& options);
 

@@ -8,7 +8,7 @@
 // where μ2, μ4, μ6 are the exact quadratic polynomials in (a2, a3) whose terms the quadrature
 // gives. Four levels of theory (Brilliantov & Pöschel, Phys. Rev. E 61 (2000), keep a2²; the
 // third coefficient enters through μ6):
-//   first_sonine   a3 = 0, F4 linearised in a2 (van Noije & Ernst; the paper's eq. a2linD)
+//   first_sonine   a3 = 0, F4 linearised in a2 (van Noije & Ernst; the paper's Eq. (25))
 //   a2_nonlinear   a3 = 0, F4 solved in full (a cubic; the root continuing the linear one)
 //   a2_a3_linear   F4 and F6 linearised in (a2, a3)
 //   a2_a3          F4 and F6 solved in full (Newton from the linear solution)

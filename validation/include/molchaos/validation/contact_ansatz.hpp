@@ -1,5 +1,5 @@
-// Collision averages at contact predicted by the paper's two-particle distribution (its eq.
-// f2genform reduced at contact) and by its two-amplitude generalisation, in closed form:
+// Collision averages at contact predicted by the paper's two-particle distribution (its Eq.
+// (14) reduced at contact) and by its two-amplitude generalisation, in closed form:
 //   f2 = f f g2 [1 + β∥ (c1·e)(c2·e) + β⊥ (c1·c2 − (c1·e)(c2·e))],
 // the printed dyad b(κ(c1·e)(c2·e) − c1·c2) being β∥ = (κ − 1) b, β⊥ = −b (κ = 3 printed, κ = d
 // traceless). Derivation and sympy check: theory/derivations/contact_correlations.py.

@@ -48,6 +48,8 @@ struct CorrelationStudy {
   std::vector<AnsatzFitRow> ansatz;
   BRoutesVerdict b_routes;         ///< printed ansatz: b_cooling against b_contact
   BRoutesVerdict beta_par_routes;  ///< two amplitudes: β∥ from cooling against ⟨(c1·e)(c2·e)⟩
+  double two_amplitude_chi2 = 0.0;  ///< the two amplitudes fitted to all four contact moments
+  int two_amplitude_dof = 0;
   std::vector<StudyClaim> claims;  ///< claim, verdict, deciding number
   int failed_runs = 0;
   double seconds = 0.0;

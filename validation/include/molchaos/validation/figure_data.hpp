@@ -93,7 +93,7 @@ struct A2Panel {
   double density = 0.0;
   std::vector<A2Series> series;
   std::vector<double> theory_restitution;
-  std::vector<Measurement> first_sonine;  ///< van Noije & Ernst (the paper's eq. a2linD)
+  std::vector<Measurement> first_sonine;  ///< van Noije & Ernst (the paper's Eq. (25))
   std::vector<Measurement> improved;      ///< with a2² and a3; error: the quadrature's
 };
 
