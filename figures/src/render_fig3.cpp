@@ -202,8 +202,8 @@ std::string inset_commands(const validation::Fig3Data& data, const std::vector<C
 
 }  // namespace
 
-// The y range of the lower panel: the deviations before the clustering onset (after it the
-// original gas leaves the homogeneous state and its curve may leave the panel), padded.
+// The y range of the lower panel: every deviation up to x_limit (the whole run: a curve that
+// left the panel after the clustering onset would hide how far the original gas departs), padded.
 static std::pair<double, double> deviation_range(const std::vector<detail::Rows>& rows,
                                                  double x_limit) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -296,8 +296,7 @@ RenderedFigure render_fig3(const validation::Fig3Data& data, const RenderOptions
   c += temperature_plot(data, curves, true, "");
   c += inset_commands(data, curves, inset_low, inset_high, two_panels);
   if (two_panels) {
-    const double limit = data.clustering_onset ? std::log(*data.clustering_onset) : x_max;
-    const auto [lo, hi] = deviation_range(deviations, limit);
+    const auto [lo, hi] = deviation_range(deviations, x_max);
     c += deviation_commands(data, x_max, onset_arrow);
     c.insert(c.rfind("  plot "),
              "  set yrange [" + detail::number(lo) + ":" + detail::number(hi) + "]\n");

@@ -390,10 +390,11 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
            "whether the cooling-rate and contact values agree.";
   if (file.starts_with("fig_impact_parameter"))
     return "Impact parameter s of the colliding pairs (0 head-on, 1 grazing) as the departure of "
-           "its histogram from flat, fraction · bins − 1, mean ± standard error over runs, one "
-           "curve per ε (filled, solid: original gas; open, dashed: flux-shuffled gas), one "
-           "panel per dimension and density. Molecular chaos makes every bin zero; look at the "
-           "last bin (grazing collisions) of the original gas against the flux gas.";
+           "its histogram from flat, fraction · bins − 1, one panel per dimension and density, "
+           "each bin the inverse-variance mean over the panel's restitutions (each ε alone: "
+           "`impact_parameter.csv`; filled, solid: original gas; open, dashed: flux-shuffled "
+           "gas). Molecular chaos makes every bin zero; look at the last bin (grazing "
+           "collisions) of the original gas against the flux gas.";
   if (file.starts_with("fig_a2_of_eps"))
     return "a2(ε), the second Sonine coefficient, one panel per density: the original, the "
            "paper-shuffled, the flux-shuffled and the DSMC gas (mean ± standard error over runs "
