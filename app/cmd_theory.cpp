@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -207,6 +208,18 @@ void print_sonine_text(const TheoryOptions& o, const theory::TheoryReport& r) {
         A ? fmt::format("{:>13} ± {:<6.1e}", general(A->value, A->error, 12), A->error)
           : std::string("none: μ2 ≤ 0, no cooling"));
   }
+  // The quadrature errors above are those of each level's integrals; how far the levels
+  // themselves disagree is the error of truncating the Sonine expansion, and at strong
+  // dissipation it is the larger one by many orders of magnitude.
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (const auto& A : r.A_by_level)
+    if (A) lowest = std::min(lowest, A->value), highest = std::max(highest, A->value);
+  if (highest > lowest)
+    std::cout << fmt::format(
+        "the levels differ by {:.2g} % in A: the truncation error of the Sonine expansion is of "
+        "this order (DSMC, `simulate --method dsmc`, solves the Enskog–Boltzmann equation "
+        "without it)\n",
+        100.0 * (highest - lowest) / lowest);
 }
 
 void print_contact_text(const theory::ContactResponse& c) {

@@ -60,6 +60,15 @@ std::string hydrodynamics_text(const theory::ReportInputs& in, const theory::The
         "  N = {}: box {:.6g} σ, the largest shear mode's amplitude grows at {:.6g} per collision "
         "per particle (its energy S⊥ at twice that, once the decaying modes have died out)\n",
         h.particles, m.box, m.rate);
+  // A box of a few mean free paths: the printed rate is the Navier–Stokes formula's, outside
+  // the range where it describes the gas.
+  if (const double kl = theory::reduced_wavenumber(c, m.wavenumber);
+      kl > theory::k_hydrodynamic_k_length_limit)
+    s += fmt::format(
+        "  note: this mode has kℓ = {:.3g} (ℓ = {:.3g} σ, about a mean free path); Navier–Stokes "
+        "hydrodynamics holds for kℓ ≪ 1 and drops terms of order (kℓ)², so above kℓ = {} its "
+        "rates for this box are not predictions\n",
+        kl, c.length_unit, theory::k_hydrodynamic_k_length_limit);
   if (!std::isfinite(m.collisions)) return s;
   s += fmt::format(
       "  its S⊥ reaches {} after {:.6g} collisions per particle, t = {} "

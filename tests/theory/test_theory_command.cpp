@@ -165,6 +165,43 @@ BOOST_AUTO_TEST_CASE(stable_box_reaches_a_level_below_its_stationary_one) {
   BOOST_TEST(run(beyond).text.find("its S⊥ never reaches") != std::string::npos);
 }
 
+// A box of a few mean free paths (N = 4 at n = 0.05: L = 8.9 σ, kℓ = 4): the Navier–Stokes rate
+// is printed with a note and flagged in the JSON (was: a decay of 15 per collision, unflagged);
+// the paper's box (kℓ = 0.11) has neither.
+BOOST_AUTO_TEST_CASE(box_of_a_few_mean_free_paths_is_named) {
+  for (const int particles : {4, 5000}) {
+    const std::string args = fmt::format("--particles {}", particles);
+    const auto j = run_json(args);
+    const double box = std::sqrt(particles / 0.05);
+    const double kl = 2 * M_PI / box * j.at("transport").at("length_unit").get<double>();
+    const auto& mode = j.at("largest_shear_mode");
+    BOOST_TEST(std::abs(mode.at("reduced_wavenumber").get<double>() / kl - 1) <= 1e-12);
+    const bool beyond = kl > 0.5;
+    BOOST_TEST(beyond == (particles == 4));
+    BOOST_TEST(mode.at("beyond_hydrodynamics").get<bool>() == beyond);
+    BOOST_TEST((run(args).text.find("note: this mode has kℓ") != std::string::npos) == beyond);
+  }
+}
+
+// How far the Sonine levels disagree in A, the truncation error of the expansion, is printed
+// beside their quadrature errors (was: A to 1e-12 at ε = 0.1, where the levels differ by 3.5 %).
+BOOST_AUTO_TEST_CASE(sonine_truncation_spread_printed) {
+  for (const double restitution : {0.1, 0.9}) {
+    const std::string args = fmt::format("--restitution {}", restitution);
+    double lowest = 1e300, highest = 0;
+    const auto j = run_json(args);
+    for (const auto& level : j.at("sonine")) {
+      const double A = level.at("A").at("value").get<double>();
+      lowest = std::min(lowest, A), highest = std::max(highest, A);
+    }
+    const std::string line = line_of(run(args).text, "the levels differ by");
+    std::smatch m;
+    BOOST_REQUIRE_MESSAGE(std::regex_search(line, m, std::regex(R"(differ by (\S+) %)")), line);
+    BOOST_TEST(std::abs(std::stod(m[1]) / (100 * (highest - lowest) / lowest) - 1) <= 0.05);
+  }
+  BOOST_TEST(run("--restitution 1").text.find("the levels differ by") == std::string::npos);
+}
+
 // --b nan named (-inf, inf), a range that is not b's; the real one depends on --dim and
 // --restitution.
 BOOST_AUTO_TEST_CASE(b_not_a_number_names_the_real_range) {

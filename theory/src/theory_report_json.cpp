@@ -66,6 +66,9 @@ void add_hydrodynamics(nlohmann::json& j, const ReportInputs& in, const TheoryRe
   j["largest_shear_mode"] = {{"particles", in.box.particles},
                              {"box", m.box},
                              {"wavenumber", m.wavenumber},
+                             {"reduced_wavenumber", reduced_wavenumber(c, m.wavenumber)},
+                             {"beyond_hydrodynamics", reduced_wavenumber(c, m.wavenumber) >
+                                                          k_hydrodynamic_k_length_limit},
                              {"rate_per_collision", m.rate},
                              {"growth", in.box.growth},
                              {"collisions_per_particle", number_or_null(m.collisions)},

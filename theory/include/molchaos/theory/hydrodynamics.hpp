@@ -75,6 +75,15 @@ bool heat_mode_unstable_at_every_wavelength(const TransportCoefficients& c);
 /// unstable shear mode.
 double critical_box_size(const TransportCoefficients& c);
 
+/// Navier–Stokes order holds for kℓ ≪ 1 (ℓ = length_unit, about a mean free path); the terms it
+/// drops are of relative order (kℓ)². Beyond this kℓ a predicted rate is reported with a note.
+inline constexpr double k_hydrodynamic_k_length_limit = 0.5;
+
+/// kℓ of a mode of wavenumber k (in 1/σ).
+inline double reduced_wavenumber(const TransportCoefficients& c, double wavenumber) {
+  return wavenumber * c.length_unit;
+}
+
 /// Transverse velocity structure factor S⊥(k, τ) = ⟨|j⊥(k)|²⟩/(N T) after τ collisions per
 /// particle from an equilibrium start S⊥ = 1, by linear fluctuating hydrodynamics.
 double transverse_structure_factor(const TransportCoefficients& c, double wavenumber, double tau);
