@@ -56,8 +56,8 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
                          mode == "none" ? "yerrorlines pointtype 7 pointsize 0.8 dashtype 1"
                                         : "yerrorlines pointtype 6 pointsize 0.8 dashtype 2",
                          k++,
-                         (mode == "none" ? "original gas" : "flux shuffle") +
-                             std::string(", ") + std::to_string(restitutions) + " ε");
+                         (mode == "none" ? "original gas" : "flux shuffle") + std::string(", ") +
+                             std::to_string(restitutions) + " ε");
     }
     c += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
          "\n  set autoscale y\n" + plot + "\n";

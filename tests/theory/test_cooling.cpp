@@ -261,8 +261,9 @@ BOOST_AUTO_TEST_CASE(range_text_has_the_digits_of_its_error) {
 }
 
 // Eq. (21) is the paper's integral for disks (its Sonine polynomial, Eq. (19), is the 2D one),
-// and ω0 of Eq. (24) is built on it: in d = 3 these rows make no claim (they were "NOT reproduced").
-// Eqs. (22) and (10) are in d = 3 form and keep their verdicts; 1/3 carries its rounding.
+// and ω0 of Eq. (24) is built on it: in d = 3 these rows make no claim (they were "NOT
+// reproduced"). Eqs. (22) and (10) are in d = 3 form and keep their verdicts; 1/3 carries its
+// rounding.
 BOOST_AUTO_TEST_CASE(paper_prefactor_rows_for_disks_only_are_not_applicable_in_three_d) {
   QuadratureOptions q;
   const auto pre3 = prefactor_checks(3, q);

@@ -239,7 +239,8 @@ BOOST_AUTO_TEST_CASE(two_dimensional_prefactors_not_applicable_in_three_d) {
   // Each row gives its own reason (the ω0 row once gave μ2's).
   for (const auto& [row, why] :
        {std::pair{"mu2(0,0)/(1-eps^2)", "not applicable (the paper's formula is for d = 2"},
-        std::pair{"omega0 prefactor", "not applicable (the paper's omega0, Eq. (24), is built on"}}) {
+        std::pair{"omega0 prefactor",
+                  "not applicable (the paper's omega0, Eq. (24), is built on"}}) {
     const std::string line = line_of(text, row);
     BOOST_TEST_INFO(line);
     BOOST_TEST(line.find(why) != std::string::npos);

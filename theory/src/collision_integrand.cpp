@@ -65,7 +65,8 @@ void CentreOfMassSum::accumulate(double u, double rho, double scale, TermSums& s
                                  TermSums& magnitudes) const {
   const int d = spec_.dimension;
   const double g[3] = {-u, rho, 0.0};
-  const double kick = 0.5 * (1.0 + spec_.restitution) * g[0];  // collision rule, paper Eqs. (5), (6)
+  // The collision rule, the paper's Eqs. (5), (6).
+  const double kick = 0.5 * (1.0 + spec_.restitution) * g[0];
   const int p = spec_.moment;
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const auto& C = nodes_[k];

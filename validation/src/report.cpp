@@ -507,9 +507,8 @@ std::string two_routes_headline(const CorrelationStudy& c) {
       "- One amplitude for the longitudinal and one for the transverse velocity correlation at "
       "contact, in place of the printed dyad: {} The same two amplitudes fitted to all four "
       "contact moments at once give chi2 = {:.1f} for {} dof (p = {:.2g}): {}.\n\n",
-      c.b_routes.statement, c.beta_par_routes.statement, c.two_amplitude_chi2,
-      c.two_amplitude_dof, p,
-      p >= k_global_p_threshold ? "they fit" : "they do not fit; closer than one b, not right");
+      c.b_routes.statement, c.beta_par_routes.statement, c.two_amplitude_chi2, c.two_amplitude_dof,
+      p, p >= k_global_p_threshold ? "they fit" : "they do not fit; closer than one b, not right");
 }
 
 }  // namespace

@@ -124,8 +124,9 @@ Claim claim_prefactors(const ReproduceResults&) {
                            fmt::join(differing, "; "));
   // Each printed 1/3 or 3 is the d = 3 value (1/d, d), taken with the d = 2 μ2 (doc/theory.md).
   if (!differing.empty())
-    c.deciding += "; the paper's 1/3 and 3 are the values for spheres (1/d and d at d = 3), "
-                  "combined with the μ2 of disks";
+    c.deciding +=
+        "; the paper's 1/3 and 3 are the values for spheres (1/d and d at d = 3), "
+        "combined with the μ2 of disks";
   return c;
 }
 
