@@ -84,7 +84,7 @@ std::string temperature_plot(const validation::Fig3Data& data, const std::vector
       detail::add_plot_element(plot, "$curve" + std::to_string(i) +
                                          " using 1:3:4 with filledcurves fillstyle transparent "
                                          "solid 0.25 noborder linecolor rgb " +
-                                         detail::colour(i) + axes + " notitle");
+                                         detail::colour(i + 1) + axes + " notitle");
   std::size_t theory_count = 0, gas_count = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i = 0; i < curves.size(); ++i) {
@@ -93,7 +93,9 @@ std::string temperature_plot(const validation::Fig3Data& data, const std::vector
       const std::string block = "$curve" + std::to_string(i);
       const std::string title =
           with_titles && !curve.label.empty() ? "title " + detail::quote(curve.label) : "notitle";
-      const std::string colour = "linecolor rgb " + detail::colour(i);
+      // Colour 0 (black) is kept for the zero lines: the gases take the colours of every other
+      // figure (detail::gas_colour_index), the theory lines the ones after them.
+      const std::string colour = "linecolor rgb " + detail::colour(i + 1);
       if (curve.is_theory) {
         const std::string dash = k_theory_dashes[theory_count++ % std::size(k_theory_dashes)];
         detail::add_plot_element(plot, block + " using 1:2 with lines " + colour + " dashtype " +
@@ -130,16 +132,16 @@ std::string deviation_commands(const validation::Fig3Data& data, double x_max,
        ", 0 nohead linecolor rgb '#888888' dashtype solid linewidth 0.8 back\n";
   std::string plot;
   for (std::size_t k = 0; k < data.deviations.size(); ++k)
-    detail::add_plot_element(plot, "$deviation" + std::to_string(k) +
-                                       " using 1:3:4 with filledcurves fillstyle transparent "
-                                       "solid 0.2 noborder linecolor rgb " +
-                                       detail::colour(gas_index(data, data.deviations[k].label)) +
-                                       " notitle");
+    detail::add_plot_element(
+        plot, "$deviation" + std::to_string(k) +
+                  " using 1:3:4 with filledcurves fillstyle transparent "
+                  "solid 0.2 noborder linecolor rgb " +
+                  detail::colour(gas_index(data, data.deviations[k].label) + 1) + " notitle");
   for (std::size_t k = 0; k < data.deviations.size(); ++k) {
     const auto& d = data.deviations[k];
     detail::add_plot_element(
         plot, "$deviation" + std::to_string(k) + " using 1:2 with lines linecolor rgb " +
-                  detail::colour(gas_index(data, d.label)) +
+                  detail::colour(gas_index(data, d.label) + 1) +
                   (d.is_theory ? " dashtype solid linewidth 1.3" : " dashtype (6,4) linewidth 1") +
                   " notitle");
   }

@@ -70,12 +70,13 @@ void gases_panel(detail::FigureScript& script, const validation::GasFieldStudy& 
     detail::add_plot_element(plot, "$" + block +
                                        " using 1:2:3 with yerrorlines pointtype 7 pointsize 0.6 "
                                        "linecolor rgb " +
-                                       detail::colour(i) + " title " + detail::quote(label));
+                                       detail::colour(detail::gas_colour_index(g.mode, i)) +
+                                       " title " + detail::quote(label));
     if (!density && g.mode == "none")
       detail::add_plot_element(plot, "$" + block +
                                          " using 1:4 with lines dashtype 3 linewidth 2 "
                                          "linecolor rgb " +
-                                         detail::colour(i) +
+                                         detail::colour(detail::gas_colour_index(g.mode, i)) +
                                          " title 'original gas, linear hydrodynamics'");
   }
   c += plot + "\n  unset logscale y\n";
