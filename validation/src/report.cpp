@@ -408,8 +408,10 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
         "particles coloured by speed over the rms speed, arrows the coarse-grained velocity "
         "field. Look at whether the density is still uniform and whether neighbouring arrows "
         "align (clusters and vortices).",
-        r.fig3_original.summary.breakdowns > 0 ? "after the clustering onset"
-                                               : "no break-down detected before it",
+        r.fig3_original.summary.breakdowns > 0
+            ? "after the detected break-down of the homogeneous state, which the velocity field "
+              "shows before the density: clusters are still faint at this time"
+            : "no break-down detected before it",
         c.fig3_restitution, c.fig3_density);
   if (file.starts_with("fig_pair_correlations"))
     return "Velocity correlations of pairs at separation r, at the state point of the title: "

@@ -183,7 +183,7 @@ void figure_b(ReproduceResults& R) {
   for (double n : R.config.densities) {
     BPanel bp;
     bp.density = n;
-    BSeries b_paper{"from A, paper's 63/40 and ω0", {}, {}};
+    BSeries b_paper{"from A, paper's 63/40 and ω0 (its 1/3)", {}, {}};
     BSeries b_suite{"from A, suite's coefficients and ω0", {}, {}};
     BSeries b_contact{"contacts, original gas − DSMC", {}, {}};
     BSeries b_control{"contacts, flux gas − DSMC (control)", {}, {}};

@@ -20,7 +20,7 @@ void GlobalTest::add(double difference_in_se, int runs) {
 double GlobalTest::p() const { return chi_square_p_value(chi2, points); }
 
 std::string agreement_rule_text() {
-  return fmt::format("agrees within {:g} combined SE", k_agreement_standard_errors);
+  return fmt::format("equal within {:g} combined SE", k_agreement_standard_errors);
 }
 
 std::string bound_rule_text(double bound) {
