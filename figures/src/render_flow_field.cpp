@@ -76,13 +76,13 @@ void draw_row(detail::FigureScript& script, const std::vector<validation::FlowFi
     c += "  set xrange " + range + "\n  set yrange " + range + "\n";
     c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
     c += "  set cbrange [" + detail::number(-vorticity) + ":" + detail::number(vorticity) + "]\n";
-    c += "  set title " + detail::quote(p.title + ": flow, vorticity") + " font ',9'\n";
+    c += "  set title " + detail::quote(p.title + ": flow, vorticity") + " font ',11'\n";
     c += "  plot $vort" + t + " using 1:2:3 with image, $arrows" + t +
          " using 1:2:3:4 with vectors head size screen 0.004,25 filled lc rgb 'black'\n";
     c += "  set palette defined (-1 '#01665e', 0 '#f5f5f5', 1 '#8c510a')\n";
     c += "  set cbrange [" + detail::number(1.0 - density) + ":" + detail::number(1.0 + density) +
          "]\n";
-    c += "  set title " + detail::quote(p.title + ": density / mean") + " font ',9'\n";
+    c += "  set title " + detail::quote(p.title + ": density / mean") + " font ',11'\n";
     c += "  plot $dens" + t + " using 1:2:3 with image\n";
   }
 }
