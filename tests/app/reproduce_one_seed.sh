@@ -26,7 +26,7 @@ done
 ! grep -Eq '[0-9]{6,}(\.[0-9]+)? SE' $report || fail "a difference of millions of standard errors: $(grep -Eo '[0-9]{6,}(\.[0-9]+)? SE' $report | head -1)"
 grep -Eq '^\| paper 5 \| .* \| \*\*not decided\*\* \| one seed per point gives no standard errors' $report ||
   fail "the Haff claim of the randomized gas is not 'not decided': $(grep '^| paper 5 ' $report)"
-grep -Eq '^\| suite 11 \| .* \| \*\*not decided\*\* \|' $report || fail "the elastic limit is decided on one run"
+grep -Eq '^\| suite 12 \| .* \| \*\*not decided\*\* \|' $report || fail "the elastic limit is decided on one run"
 # The Fig. 4 slopes: with one seed their error is the scatter of three points about a line (one
 # degree of freedom), not a standard error of A.
 for claim in 'paper 6' 'paper 7'; do

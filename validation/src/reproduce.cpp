@@ -94,6 +94,7 @@ constexpr ClaimStep k_claims[] = {
     steps::claim_clustering_onset,
     steps::claim_shuffles_suppress_vortices,
     steps::claim_randomized_stays_homogeneous,
+    steps::claim_randomized_haff_form,
     // the suite's own findings
     steps::finding_elastic_limit,
     steps::finding_flux_follows_haff,

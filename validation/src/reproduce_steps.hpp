@@ -50,6 +50,7 @@ Claim claim_mu2_coefficient_b(const ReproduceResults& results);
 Claim claim_prefactors(const ReproduceResults& results);
 Claim claim_A_varies_little(const ReproduceResults& results);
 Claim claim_randomized_follows_haff(const ReproduceResults& results);
+Claim claim_randomized_haff_form(const ReproduceResults& results);
 Claim claim_randomized_A_flat(const ReproduceResults& results);
 Claim claim_original_A_depends_on_eps(const ReproduceResults& results);
 Claim claim_clustering_onset(const ReproduceResults& results);
