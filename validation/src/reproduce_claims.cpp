@@ -207,8 +207,8 @@ Claim claim_randomized_follows_haff(const ReproduceResults& R) {
   HaffComparison h = compare_with_haff(R, "paper");
   Claim c{ClaimSource::paper,
           "the randomized gas (paper's shuffle) is a gas without velocity correlations: it cools "
-          "by Haff's law with kinetic theory's τ0, A = A_rand (Eq. (26) takes it so; the paper's "
-          "Fig. 3 fits τ0, and the Haff form with a fitted τ0 is not what this row tests)",
+          "by Haff's law with kinetic theory's τ0, A = A_rand (Eq. (26) takes it so; Haff's form "
+          "with a fitted τ0, the paper's Fig. 3, has a row of its own below)",
           h.test.holds() ? "reproduced" : "not reproduced", haff_deciding(h), std::move(h.rows)};
   return c;
 }
