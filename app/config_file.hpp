@@ -38,8 +38,9 @@ struct ConfigFile {
   /// The command that wrote a result CSV, from its title line ("# molchaos sweep summary ..."):
   /// empty where the file names none.
   std::string writer;
-  /// A TOML file's keys whose value is a string that reads as a number ("100"), with the place
-  /// of each ("path line N"): refused for an option that takes numbers.
+  /// A TOML file's keys whose value is a string that reads as a number ("100") or a boolean
+  /// ("true"), with the place of each ("path line N"): refused for an option that takes numbers
+  /// or a flag.
   std::map<std::string, std::string> quoted_literals;
 };
 
