@@ -502,15 +502,27 @@ std::string animation_line(const ReproduceResults& r, const std::vector<std::str
 std::string two_routes_headline(const CorrelationStudy& c) {
   if (c.b_routes.points == 0) return "";
   const double p = chi_square_p_value(c.two_amplitude_chi2, c.two_amplitude_dof);
+  // Which state points: the correlation study's, in both dimensions (the Fig. 4 ensemble's own
+  // comparison of the two routes is a row of the findings).
+  int in_two = 0, in_three = 0;
+  for (const auto& f : c.ansatz) ++(f.dimension == 2 ? in_two : in_three);
+  const std::string points =
+      in_two + in_three == c.b_routes.points
+          ? fmt::format(
+                " The state points are the correlation study's, {} in d = 2 and {} in "
+                "d = 3; the Fig. 4 ensemble compares the two routes in its own row below.",
+                in_two, in_three)
+          : std::string();
   return fmt::format(
       "**b, the velocity correlation of the paper's two-particle distribution at contact (its "
-      "Eq. (14)), measured two ways by this suite** (the paper gives no measured b):\n\n"
+      "Eq. (14)), measured two ways by this suite** (the paper gives no measured b).{}\n\n"
       "- The printed ansatz, one b: {}\n"
       "- One amplitude for the longitudinal and one for the transverse velocity correlation at "
       "contact, in place of the printed dyad: {} The same two amplitudes fitted to all four "
       "contact moments at once give chi2 = {:.1f} for {} dof (p = {:.2g}): {}.\n\n",
-      c.b_routes.statement, c.beta_par_routes.statement, c.two_amplitude_chi2, c.two_amplitude_dof,
-      p, p >= k_global_p_threshold ? "they fit" : "they do not fit; closer than one b, not right");
+      points, c.b_routes.statement, c.beta_par_routes.statement, c.two_amplitude_chi2,
+      c.two_amplitude_dof, p,
+      p >= k_global_p_threshold ? "they fit" : "they do not fit; closer than one b, not right");
 }
 
 }  // namespace
