@@ -68,10 +68,20 @@ detail::Rows deviation_rows(const validation::TemperatureCurve& curve, const std
   return rows;
 }
 
+// Colour of curve i: a gas takes its colour of every other figure (detail::gas_colour_index), a
+// theory line the next free ones in turn; colour 0 (black) stays for the zero lines.
+std::size_t curve_colour(const validation::Fig3Data& data, std::size_t i) {
+  if (!data.curves[i].is_theory) return detail::gas_colour_index(data.curves[i].mode, i);
+  std::size_t theory = 0;
+  for (std::size_t j = 0; j < i; ++j) theory += data.curves[j].is_theory ? 1 : 0;
+  return detail::gas_colour_index("", theory);
+}
+
 // Colour of a deviation curve: that of the gas whose label it starts with.
-std::size_t gas_index(const validation::Fig3Data& data, const std::string& label) {
+std::size_t deviation_colour(const validation::Fig3Data& data, const std::string& label) {
   for (std::size_t i = 0; i < data.curves.size(); ++i)
-    if (!data.curves[i].is_theory && label.starts_with(data.curves[i].label)) return i;
+    if (!data.curves[i].is_theory && label.starts_with(data.curves[i].label))
+      return curve_colour(data, i);
   return 0;
 }
 
@@ -84,7 +94,7 @@ std::string temperature_plot(const validation::Fig3Data& data, const std::vector
       detail::add_plot_element(plot, "$curve" + std::to_string(i) +
                                          " using 1:3:4 with filledcurves fillstyle transparent "
                                          "solid 0.25 noborder linecolor rgb " +
-                                         detail::colour(i + 1) + axes + " notitle");
+                                         detail::colour(curve_colour(data, i)) + axes + " notitle");
   std::size_t theory_count = 0, gas_count = 0;
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i = 0; i < curves.size(); ++i) {
@@ -93,9 +103,7 @@ std::string temperature_plot(const validation::Fig3Data& data, const std::vector
       const std::string block = "$curve" + std::to_string(i);
       const std::string title =
           with_titles && !curve.label.empty() ? "title " + detail::quote(curve.label) : "notitle";
-      // Colour 0 (black) is kept for the zero lines: the gases take the colours of every other
-      // figure (detail::gas_colour_index), the theory lines the ones after them.
-      const std::string colour = "linecolor rgb " + detail::colour(i + 1);
+      const std::string colour = "linecolor rgb " + detail::colour(curve_colour(data, i));
       if (curve.is_theory) {
         const std::string dash = k_theory_dashes[theory_count++ % std::size(k_theory_dashes)];
         detail::add_plot_element(plot, block + " using 1:2 with lines " + colour + " dashtype " +
@@ -136,12 +144,12 @@ std::string deviation_commands(const validation::Fig3Data& data, double x_max,
         plot, "$deviation" + std::to_string(k) +
                   " using 1:3:4 with filledcurves fillstyle transparent "
                   "solid 0.2 noborder linecolor rgb " +
-                  detail::colour(gas_index(data, data.deviations[k].label) + 1) + " notitle");
+                  detail::colour(deviation_colour(data, data.deviations[k].label)) + " notitle");
   for (std::size_t k = 0; k < data.deviations.size(); ++k) {
     const auto& d = data.deviations[k];
     detail::add_plot_element(
         plot, "$deviation" + std::to_string(k) + " using 1:2 with lines linecolor rgb " +
-                  detail::colour(gas_index(data, d.label) + 1) +
+                  detail::colour(deviation_colour(data, d.label)) +
                   (d.is_theory ? " dashtype solid linewidth 1.3" : " dashtype (6,4) linewidth 1") +
                   " notitle");
   }

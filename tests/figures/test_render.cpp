@@ -84,10 +84,10 @@ val::Fig3Data synthetic_fig3() {
   std::normal_distribution<double> noise(0.0, 1.0);
   val::Fig3Data data;
   data.clustering_onset = onset;
-  val::TemperatureCurve original{"original gas (no shuffle)", {}, {}, {}, false};
-  val::TemperatureCurve randomized{"randomized gas (flux)", {}, {}, {}, false};
-  val::TemperatureCurve theory{"Haff's law, τ_0 from kinetic theory", {}, {}, {}, true};
-  val::TemperatureCurve fitted{"Haff's law, fitted τ_0", {}, {}, {}, true};
+  val::TemperatureCurve original{"original gas (no shuffle)", {}, {}, {}, false, "none"};
+  val::TemperatureCurve randomized{"randomized gas (flux)", {}, {}, {}, false, "flux"};
+  val::TemperatureCurve theory{"Haff's law, τ_0 from kinetic theory", {}, {}, {}, true, ""};
+  val::TemperatureCurve fitted{"Haff's law, fitted τ_0", {}, {}, {}, true, ""};
   for (int i = 0; i <= 300; ++i) {
     const double t = i == 0 ? 0.0 : std::exp(-2.0 + 10.5 * i / 300.0);
     // After the onset the clustered gas cools more slowly.

@@ -290,7 +290,9 @@ void figure_fig3(ReproduceResults& R) {
     std::vector<const sim::RunResult*> group;
     for (const auto& o : R.fig3_runs)
       if (o.ok && o.result.parameters.randomize == mode) group.push_back(&o.result);
-    gases.push_back(mean_curve(group, mode_label(std::string(sim::to_string(mode)))));
+    const std::string name(sim::to_string(mode));
+    gases.push_back(mean_curve(group, mode_label(name)));
+    gases.back().mode = name;
   }
   require_every_curve(R, gases);
   const std::vector<double> times = gases.front().t;

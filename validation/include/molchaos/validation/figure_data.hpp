@@ -24,6 +24,7 @@ struct TemperatureCurve {
   std::vector<double> T;        ///< temperature T/T0 (ensemble mean)
   std::vector<double> T_error;  ///< standard error of the mean (0 for a single run)
   bool is_theory = false;       ///< a Haff's-law line rather than simulation data
+  std::string mode;             ///< the gas ("none", "paper", "flux"; its colour); empty for theory
 };
 
 /// Fig. 3 of the paper: T(t) at ε = 0.93, n = 0.05, N = 5000.
