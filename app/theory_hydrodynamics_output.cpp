@@ -62,13 +62,13 @@ std::string hydrodynamics_text(const theory::ReportInputs& in, const theory::The
         h.particles, m.box, m.rate);
   // A box of a few mean free paths: the printed rate is the Navier–Stokes formula's, outside
   // the range where it describes the gas.
-  if (const double kl = theory::reduced_wavenumber(c, m.wavenumber);
-      kl > theory::k_hydrodynamic_k_length_limit)
+  if (theory::beyond_hydrodynamics(c, m.wavenumber))
     s += fmt::format(
         "  note: this mode has kℓ = {:.3g} (ℓ = {:.3g} σ, about a mean free path); Navier–Stokes "
         "hydrodynamics holds for kℓ ≪ 1 and drops terms of order (kℓ)², so above kℓ = {} its "
         "rates for this box are not predictions\n",
-        kl, c.length_unit, theory::k_hydrodynamic_k_length_limit);
+        theory::reduced_wavenumber(c, m.wavenumber), c.length_unit,
+        theory::k_hydrodynamic_k_length_limit);
   if (!std::isfinite(m.collisions)) return s;
   s += fmt::format(
       "  its S⊥ reaches {} after {:.6g} collisions per particle, t = {} "

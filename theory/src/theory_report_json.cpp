@@ -63,18 +63,17 @@ void add_hydrodynamics(nlohmann::json& j, const ReportInputs& in, const TheoryRe
       {"bulk_viscosity", c.bulk_viscosity},       {"thermal_conductivity", c.thermal_conductivity},
       {"heat_flux_density", c.heat_flux_density}, {"length_unit", c.length_unit},
       {"collision_ratio", c.collision_ratio}};
-  j["largest_shear_mode"] = {
-      {"particles", in.box.particles},
-      {"box", m.box},
-      {"wavenumber", m.wavenumber},
-      {"reduced_wavenumber", reduced_wavenumber(c, m.wavenumber)},
-      {"beyond_hydrodynamics", reduced_wavenumber(c, m.wavenumber) > k_hydrodynamic_k_length_limit},
-      {"rate_per_collision", m.rate},
-      {"growth", in.box.growth},
-      {"collisions_per_particle", number_or_null(m.collisions)},
-      {"time", number_or_null(m.time)},
-      {"log_time", number_or_null(m.log_time)},
-      {"stationary_level", number_or_null(m.stationary_level)}};
+  j["largest_shear_mode"] = {{"particles", in.box.particles},
+                             {"box", m.box},
+                             {"wavenumber", m.wavenumber},
+                             {"reduced_wavenumber", reduced_wavenumber(c, m.wavenumber)},
+                             {"beyond_hydrodynamics", beyond_hydrodynamics(c, m.wavenumber)},
+                             {"rate_per_collision", m.rate},
+                             {"growth", in.box.growth},
+                             {"collisions_per_particle", number_or_null(m.collisions)},
+                             {"time", number_or_null(m.time)},
+                             {"log_time", number_or_null(m.log_time)},
+                             {"stationary_level", number_or_null(m.stationary_level)}};
 }
 
 }  // namespace

@@ -84,6 +84,11 @@ inline double reduced_wavenumber(const TransportCoefficients& c, double wavenumb
   return wavenumber * c.length_unit;
 }
 
+/// Whether a mode of wavenumber k lies beyond that limit, where a rate is printed with a note.
+inline bool beyond_hydrodynamics(const TransportCoefficients& c, double wavenumber) {
+  return reduced_wavenumber(c, wavenumber) > k_hydrodynamic_k_length_limit;
+}
+
 /// Transverse velocity structure factor S⊥(k, τ) = ⟨|j⊥(k)|²⟩/(N T) after τ collisions per
 /// particle from an equilibrium start S⊥ = 1, by linear fluctuating hydrodynamics.
 double transverse_structure_factor(const TransportCoefficients& c, double wavenumber, double tau);
