@@ -492,6 +492,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
                                        " again (first as '" + first->second +
                                        "'); give each option once");
     set_by.emplace(op, key);
+    const bool is_flag = op->get_expected_min() == 0;  // takes true or false
     // TOML types its values: "100" and "true" are strings, which an option that takes numbers
     // or a flag would read as the number or the boolean without a word where the file's writer
     // may have meant another type.
@@ -502,7 +503,6 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
       } catch (const CLI::OptionNotFound&) {
         takes_numbers = false;
       }
-      const bool is_flag = op->get_expected_min() == 0;
       if (takes_numbers || is_flag) {
         std::string bare;
         for (const std::string& v : values) bare += (bare.empty() ? "" : ", ") + v;
@@ -534,7 +534,7 @@ void apply_config_file(CLI::App* cmd, const std::string& path) {
     const CLI::results_t given = op->results();
     op->clear();
     try {
-      if (op->get_expected_min() == 0) {  // a flag: true or false
+      if (is_flag) {
         if (values.size() != 1 || (values[0] != "true" && values[0] != "false"))
           throw CLI::ValidationError(op->get_name(), "expects true or false");
         op->add_result(op->get_flag_value(op->get_single_name(), values[0]));
