@@ -5,6 +5,7 @@
 // other within their errors, and the mean shows the shape they share (the table holds each ε).
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -37,7 +38,7 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
     for (const std::string mode : {"none", "flux"}) {
       // Per bin centre: the sums of w·y and of w = 1/error² over the restitutions.
       std::map<double, std::pair<double, double>> sums;
-      std::size_t restitutions = 0;
+      std::set<double> restitutions;
       for (const auto& r : rows) {
         if (r.dimension != d || r.density != n || r.mode != mode || !(r.fraction.error > 0.0))
           continue;
@@ -46,7 +47,7 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
         auto& [wy, wsum] = sums[0.5 * (r.s_lo + r.s_hi)];
         wy += w * (r.fraction.value * bins - 1.0);
         wsum += w;
-        if (r.s_lo == 0.0) ++restitutions;
+        restitutions.insert(r.restitution);
       }
       detail::Rows data;
       for (const auto& [centre, sum] : sums)
@@ -57,7 +58,7 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
                                         : "yerrorlines pointtype 6 pointsize 0.8 dashtype 2",
                          k++,
                          (mode == "none" ? "original gas" : "flux shuffle") + std::string(", ") +
-                             std::to_string(restitutions) + " ε");
+                             std::to_string(restitutions.size()) + " ε");
     }
     c += "  set title " + detail::quote(detail::dimension_density_title(d, n)) +
          "\n  set autoscale y\n" + plot + "\n";
