@@ -13,14 +13,10 @@ mkdir -p "$out"
 printf "%-3s %-6s %-6s %6s %12s %10s %10s %8s\n" d n mode seeds coll/run ratio stderr dev/se
 for d in 2 3; do
   for density in 0.05 0.1; do
-    # Enskog's frequency at T = 1, and a run twice as long as the counted collisions need.
-    omega_enskog=$(python3 -c "
-import math
-d,n=$d,$density
-if d==2:
-    e=math.pi*n/4; g=(1-7*e/16)/(1-e)**2; print(repr(2*n*g*math.sqrt(math.pi)))
-else:
-    e=math.pi*n/6; g=(1-e/2)/(1-e)**3; print(repr(4*n*g*math.sqrt(math.pi)))")
+    # Enskog's frequency at T = 1 as the suite computes it, and a run twice as long as the
+    # counted collisions need.
+    omega_enskog=$("$build/molchaos" theory --dim "$d" --density "$density" --restitution 1 --json |
+      python3 -c "import json, sys; print(repr(json.load(sys.stdin)['enskog_collision_frequency']))")
     t_end=$(python3 -c "print(4*$collisions/($n*$omega_enskog))")
     t_half=$(python3 -c "print($t_end/2)")
     for mode in none paper flux; do

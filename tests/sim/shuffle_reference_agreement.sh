@@ -26,13 +26,14 @@ if ! { seq 1 "$seeds" | xargs -P 2 -I{} sh -c \
   exit 1
 fi
 
-python3 - "$work" "$seeds" $n $density $t_skip $t_end <<'EOF'
+# Enskog's frequency at T = 1 as the suite computes it (Henderson's g2, as the reference uses).
+omega_enskog=$("$molchaos" theory --density $density --restitution 1 --json |
+  python3 -c "import json, sys; print(repr(json.load(sys.stdin)['enskog_collision_frequency']))")
+
+python3 - "$work" "$seeds" $n $t_skip $t_end "$omega_enskog" <<'EOF'
 import math, sys
-work, seeds, n, density, t_skip, t_end = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), \
+work, seeds, n, t_skip, t_end, omega_enskog = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), \
     float(sys.argv[4]), float(sys.argv[5]), float(sys.argv[6])
-eta = math.pi * density / 4
-g2 = (1 - 7 * eta / 16) / (1 - eta) ** 2          # Henderson, as the reference uses
-omega_enskog = 2 * density * g2 * math.sqrt(math.pi)
 
 def engine_ratio(path):
     rows = {float(r[0]): int(r[3]) for r in
