@@ -156,10 +156,11 @@ void run_sweep_command(SweepCliOptions& o) {
   so.runner = default_sweep_runner();
   const auto runs = validation::expand(o.spec);
   const auto outcomes = validation::run_sweep(runs, so);
-  auto points = validation::summarize(o.spec, outcomes, validation::WindowRule{});
+  const validation::WindowRule window{};
+  auto points = validation::summarize(o.spec, outcomes, window);
   // --target-error: further seeds in stages (each reads the seeds before it back from the cache);
   // failed runs are counted per point by the summaries below.
-  validation::grow_to_target({{&points, &o.spec}}, so, validation::WindowRule{});
+  validation::grow_to_target({{&points, &o.spec}}, so, window);
   // p: how often runs of an A that theory got right would differ by this many standard errors
   // or more (Student's t: from a handful of runs the standard error is itself uncertain).
   std::cout << fmt::format("{:>8} {:>6} {:>6} {:>6} {:>12} {:>10} {:>12} {:>9} {:>7} {:>5}\n",
@@ -228,7 +229,7 @@ void run_sweep_command(SweepCliOptions& o) {
   if (!o.out.empty()) {
     const auto parent = std::filesystem::path(o.out).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    validation::write_summary_csv(o.spec, points, k_version, o.out);
+    validation::write_summary_csv(o.spec, points, window, k_version, o.out);
   }
   if (failed > 0)
     throw std::runtime_error(fmt::format("{} run(s) failed or could not be fitted", failed));

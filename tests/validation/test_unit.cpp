@@ -461,9 +461,11 @@ BOOST_AUTO_TEST_CASE(elastic_collision_frequency_leaves_out_the_start_up_transie
 }
 
 // Two summary points at density 0.05, mode none, restitutions 0.9 and 1, of `runs` runs each,
-// and the data rows of their summary CSV as write_summary_csv writes them.
+// and the lines of their summary CSV that start with `prefix` (by default the data rows) as
+// write_summary_csv writes them with the fit-window rule `window`.
 struct SummaryPair {
   EnsembleSpec spec;
+  WindowRule window{};
   std::vector<PointResult> points{2};
   explicit SummaryPair(int runs) {
     spec.restitutions = {0.9, 1.0};
@@ -475,14 +477,14 @@ struct SummaryPair {
       points[i].summary.runs = runs;
     }
   }
-  std::vector<std::string> rows() const {
+  std::vector<std::string> rows(const std::string& prefix = "0.05,") const {
     const auto path = std::filesystem::temp_directory_path() /
                       ("molchaos_summary_" + std::to_string(::getpid()) + ".csv");
-    write_summary_csv(spec, points, "test", path.string());
+    write_summary_csv(spec, points, window, "test", path.string());
     std::ifstream in(path);
     std::vector<std::string> found;
     for (std::string line; std::getline(in, line);)
-      if (line.starts_with("0.05,")) found.push_back(line);
+      if (line.starts_with(prefix)) found.push_back(line);
     std::filesystem::remove(path);
     return found;
   }
@@ -515,6 +517,21 @@ BOOST_AUTO_TEST_CASE(summary_columns_that_do_not_apply_are_nan) {
              "0.05,0.9,edmd,none,20.5,0.1,3,0,21.3,2.5e-14,-0.5,0.02,0.01,0.003,0,nan,"
              "nan,nan,nan");
   BOOST_TEST(rows[1] == "0.05,1,edmd,none,nan,nan,3,0,nan,nan,nan,nan,nan,nan,0,nan,nan,1.01,0.02");
+}
+
+// The summary's header states the fit window it was made with, every threshold to the last digit,
+// so that its A can be recomputed from the runs' T(t) alone.
+BOOST_AUTO_TEST_CASE(summary_header_states_the_fit_window) {
+  SummaryPair s(3);
+  s.window.start_collisions_per_particle = 2.5;
+  s.window.density_mode_threshold = 7.123456789012345;
+  s.window.velocity_mode_threshold = 4.25;
+  const auto lines = s.rows("# window:");
+  BOOST_TEST_REQUIRE(lines.size() == 1u);
+  BOOST_TEST(lines[0] + "\n" == window_rule_line(s.window));
+  for (const char* part :
+       {"at least 2.5 collisions", "density mode > 7.123456789012345", "velocity mode > 4.25"})
+    BOOST_TEST(lines[0].find(part) != std::string::npos, part);
 }
 
 // The report page embeds an animation as a GIF data URI and a still figure as a PNG one.

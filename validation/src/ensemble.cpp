@@ -219,7 +219,8 @@ std::vector<std::string> extrapolated_theory_notes(const EnsembleSpec& spec) {
 }
 
 void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& points,
-                       const std::string& version, const std::string& path) {
+                       const WindowRule& window, const std::string& version,
+                       const std::string& path) {
   sim::write_file_atomically(path, [&](std::ostream& out) {
     out << "# molchaos sweep summary (sigma = m = k_B = 1, T0 = 1)\n";
     out << "# version = " << version << "\n";
@@ -234,6 +235,7 @@ void write_summary_csv(const EnsembleSpec& s, const std::vector<PointResult>& po
       out << fmt::format("# t_end_elastic = {}\n", s.t_end_elastic);
     out << fmt::format("# samples_per_decade = {}\n", s.samples_per_decade);
     out << fmt::format("# relax_collisions_per_particle = {}\n", s.relax_collisions_per_particle);
+    out << window_rule_line(window);
     if (s.target_relative_error > 0.0)  // `seeds` was the first stage; the runs column says more
       out << fmt::format("# target_error = {}\n# max_seeds = {}\n", s.target_relative_error,
                          s.max_seeds);

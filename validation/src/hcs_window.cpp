@@ -1,6 +1,8 @@
 // Fit-window rule: transient by collision count, end by the break-down indicators.
 #include "molchaos/validation/hcs_window.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -94,6 +96,15 @@ FitWindow choose_window(const std::vector<sim::Sample>& samples, std::int64_t pa
   w.valid = w.t_stop > w.t_start;
   if (!w.valid) w.message = "the homogeneous cooling state broke down before the transient ended";
   return w;
+}
+
+std::string window_rule_line(const WindowRule& rule) {
+  return fmt::format(
+      "# window: from the first sample with at least {} collisions/particle to the first of two "
+      "consecutive samples each with density mode > {} or velocity mode > {} (that sample "
+      "included), else to the last sample\n",
+      rule.start_collisions_per_particle, rule.density_mode_threshold,
+      rule.velocity_mode_threshold);
 }
 
 }  // namespace molchaos::validation

@@ -47,11 +47,7 @@ std::string header_lines(const ReproduceResults& r) {
   s += fmt::format(
       "# t_end_in_tau0 = {}\n# samples_per_decade = {}\n# relax_collisions_per_particle = {}\n",
       c.t_end_in_tau0, r.fig4_spec.samples_per_decade, r.fig4_spec.relax_collisions_per_particle);
-  s += fmt::format(
-      "# window: start after {} collisions/particle; stop at density mode > {} or velocity mode > "
-      "{}\n",
-      c.window.start_collisions_per_particle, c.window.density_mode_threshold,
-      c.window.velocity_mode_threshold);
+  s += window_rule_line(c.window);
   s += fmt::format(
       "# dsmc_seeds = {} (method = dsmc at every Fig. 4 point, mode none; the first stage, as "
       "seeds)\n",

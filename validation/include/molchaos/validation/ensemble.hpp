@@ -93,9 +93,10 @@ std::vector<PointResult> summarize(const EnsembleSpec& spec, const std::vector<R
 /// the equilibrium fluid (theory::g2_extrapolated); empty when every density is a fluid's.
 std::vector<std::string> extrapolated_theory_notes(const EnsembleSpec& spec);
 
-/// Summary table as CSV (header lines with the spec and version, then one row per point) to a
-/// temporary file renamed to path.
+/// Summary table as CSV (header lines with the spec, the fit window's rule and the version, then
+/// one row per point) to a temporary file renamed to path.
 void write_summary_csv(const EnsembleSpec& spec, const std::vector<PointResult>& points,
-                       const std::string& version, const std::string& path);
+                       const WindowRule& window, const std::string& version,
+                       const std::string& path);
 
 }  // namespace molchaos::validation

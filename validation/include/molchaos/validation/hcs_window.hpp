@@ -77,4 +77,8 @@ Breakdown detect_breakdown(const std::vector<sim::Sample>& samples, const Window
 FitWindow choose_window(const std::vector<sim::Sample>& samples, std::int64_t particles,
                         const WindowRule& rule);
 
+/// The rule as a result file's header line ("# window: ...\n"), every threshold to the last
+/// digit, so that a table's A can be recomputed from its runs' T(t) alone.
+std::string window_rule_line(const WindowRule& rule);
+
 }  // namespace molchaos::validation
