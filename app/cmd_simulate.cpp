@@ -124,13 +124,15 @@ std::vector<std::string> parameter_lines(const std::string& path) {
 // The snapshot files of the run whose CSV this run replaced (`replaced`: its parameter lines,
 // empty if there was none), numbered from `from` on: the run that wrote them is gone, and they
 // would pass for this run's. Only files written by that run (the same parameter lines) are
-// removed, and none of this run's own outputs: another run's files (an --out differing only in
-// its extension names the same snapshots) and the files this run wrote stay.
+// removed, and none of this run's own files: another run's files (an --out differing only in
+// its extension names the same snapshots), the files this run wrote and the files it read (its
+// --config, which may be such a snapshot, and its --restart) stay.
 void remove_earlier_snapshots(const SimulateOptions& o, std::size_t from,
                               const std::vector<std::string>& replaced) {
   if (replaced.empty()) return;
   std::vector<std::string> own_files = o.written_files();
   own_files.push_back(o.checkpoints.restart);
+  own_files.push_back(o.config);
   const auto own = [&own_files](const std::string& path) {
     std::error_code ec;
     for (const std::string& f : own_files)

@@ -148,6 +148,13 @@ rm own.snapshot1.csv
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out own.csv --checkpoint own.snapshot1.csv \
   --checkpoint-interval 1 2>/dev/null || fail "simulate own.csv with a checkpoint"
 [ -s own.snapshot1.csv ] || fail "the run removed its own checkpoint named like a snapshot"
+# ... nor the file this run read its options from: a snapshot of the run it replaces, re-run with
+# fewer snapshot times.
+"$bin" simulate --particles 100 --t-end 5 --relax 1 --snapshot-times 1 4 --quiet --out cfg.csv 2>/dev/null || fail "simulate cfg.csv"
+"$bin" simulate --config cfg.snapshot1.csv --snapshot-times 1 --seed 2 --quiet --out cfg.csv 2>/dev/null ||
+  fail "simulate --config cfg.snapshot1.csv --out cfg.csv"
+grep -qx '# seed = 2' cfg.csv && [ -s cfg.snapshot1.csv ] && grep -qx '# seed = 1' cfg.snapshot1.csv ||
+  fail "the run removed the --config file it read: $(ls cfg*)"
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --snapshot-times 0.5,1 --quiet --out ext.csv 2>/dev/null || fail "simulate ext.csv"
 "$bin" simulate --particles 100 --t-end 2 --relax 1 --quiet --out ext.txt 2>/dev/null || fail "simulate ext.txt"
 [ -f ext.snapshot0.csv ] && [ -f ext.snapshot1.csv ] || fail "a run of --out ext.txt removed the snapshots of ext.csv"
