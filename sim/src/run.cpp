@@ -16,6 +16,7 @@
 #include "molchaos/sim/dsmc.hpp"
 #include "molchaos/sim/engine.hpp"
 #include "molchaos/sim/initial_state.hpp"
+#include "molchaos/sim/memory_need.hpp"
 #include "molchaos/sim/parameter_table.hpp"
 #include "molchaos/sim/relaxed_states.hpp"
 #include "molchaos/version.hpp"
@@ -296,6 +297,7 @@ double enskog_collision_frequency(int dimension, double density, double temperat
 std::optional<RunResult> run_with_checkpoints(const Parameters& p, const ProgressReporter& progress,
                                               const CheckpointOptions& checkpoints) {
   validate(p);
+  require_memory(p, memory_limit_bytes());
   if (p.method == Method::dsmc) {  // the one place the method is chosen
     // DSMC runs take seconds where MD runs take hours; its state has no checkpoint format.
     if (!checkpoints.path.empty() || !checkpoints.restart.empty())

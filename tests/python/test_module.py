@@ -471,19 +471,38 @@ def test_readers_refuse_truncated_files(molchaos_bin, tmp_path):
 
 
 def test_a_run_beyond_the_memory_raises_memory_error_with_the_clis_words():
-    # Was: MemoryError("std::bad_alloc"). In its own interpreter, its address space cut to 2 GB
-    # after the imports; 1e8 disks need about 20 GB.
+    # Was: MemoryError("std::bad_alloc"). In its own interpreter, its address space cut to 0.5 GB
+    # above what it holds after the imports: 3e6 disks pass the check before the run (at least
+    # 150 bytes each) but need about 210.
     code = """
 import resource, molchaos
-resource.setrlimit(resource.RLIMIT_AS, (2_000_000_000, 2_000_000_000))
+held = next(int(line.split()[1]) * 1024 for line in open("/proc/self/status")
+            if line.startswith("VmSize:"))
+resource.setrlimit(resource.RLIMIT_AS, (held + 500_000_000, held + 500_000_000))
 try:
-    molchaos.simulate(particles=100_000_000, t_end=1.0)
+    molchaos.simulate(particles=3_000_000, t_end=1.0)
 except MemoryError as e:
     print(e)
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith("out of memory") and "fewer particles" in out.stdout
+
+
+def test_a_run_whose_parameters_exceed_the_memory_is_refused_before_it_starts():
+    # 1e8 disks hold at least 15 GB; the address space is cut to 2 GB after the imports.
+    code = """
+import resource, molchaos
+resource.setrlimit(resource.RLIMIT_AS, (2_000_000_000, 2_000_000_000))
+try:
+    molchaos.simulate(particles=100_000_000, t_end=1.0)
+except ValueError as e:
+    print(e)
+"""
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.startswith("particles: a run of 100000000 disks holds at least 15 GB")
+    assert "allowed: at most" in out.stdout
 
 
 def test_theory_names_an_unknown_keyword():
