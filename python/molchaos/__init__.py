@@ -1,6 +1,13 @@
 """molchaos from Python: the kinetic theory and the event-driven simulation of granular gases
 (compiled extension _molchaos), and readers for every file the suite writes (readers.py)."""
 
+try:  # simulate() returns numpy arrays, the readers pandas tables
+    import numpy as _numpy  # noqa: F401
+    import pandas as _pandas  # noqa: F401
+except ImportError as missing:
+    raise ImportError(f"molchaos needs numpy and pandas ({missing}); on Debian: apt-get install "
+                      "python3-numpy python3-pandas") from missing
+
 from ._molchaos import __version__, clear_relaxed_states, simulate
 from ._molchaos import _theory, _theory_keywords
 from .readers import read_run_csv, read_snapshot_csv, read_table, read_trajectory
