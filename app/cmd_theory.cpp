@@ -162,7 +162,7 @@ void print_prediction_text(const TheoryOptions& o, const theory::TheoryReport& r
   std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n", p.enskog_collision_frequency);
   // The end to six digits, cut rather than rounded (rounded, 0.666666666666631 read 0.666667, a
   // b the range refuses); the full end is in --json and in the message refusing a b.
-  std::cout << fmt::format("  allowed b            {}\n\n", theory::range_text(r.b_range, 6));
+  std::cout << fmt::format("  allowed b            {}\n\n", theory::range_text(r.b_range));
 }
 
 void print_coefficients_text(const TheoryOptions& o, const theory::TheoryReport& r) {

@@ -83,7 +83,7 @@ def test_theory_refuses_the_density_the_cli_refuses(molchaos_bin, restitution):
 
 @pytest.mark.parametrize("b", [-1.5, 0.6])
 def test_theory_takes_the_b_the_cli_takes(molchaos_bin, b):
-    # The allowed b depends on d and eps ([-2, 0.671216) here); the module and the CLI share it.
+    # The allowed b depends on d and eps ([-2, 0.671215957784484) here); the module and the CLI share it.
     out = subprocess.run(
         [molchaos_bin, "theory", "--restitution", "0.9", "--density", "0.05", "--b", str(b),
          "--json"], check=True, capture_output=True, text=True).stdout
