@@ -116,6 +116,22 @@ std::string number_without_underscores(const std::string& text, const std::strin
   return number;
 }
 
+// TOML's hexadecimal, octal and binary integers (0x10, 0o20, 0b10000) in decimal, as the options
+// read them; any other text as it is.
+std::string decimal_integer(const std::string& text, const std::string& where) {
+  if (text.size() < 2 || text[0] != '0' || (text[1] != 'x' && text[1] != 'o' && text[1] != 'b'))
+    return text;
+  const int base = text[1] == 'x' ? 16 : text[1] == 'o' ? 8 : 2;
+  std::uint64_t value = 0;
+  const char* first = text.data() + 2;
+  const char* last = text.data() + text.size();
+  const auto [end, ec] = std::from_chars(first, last, value, base);
+  if (first == last || end != last || ec != std::errc())
+    throw UsageError("--config", where + ": '" + text + "' is no integer of base " +
+                                     std::to_string(base) + " within 64 bits");
+  return std::to_string(value);
+}
+
 // Whether a string reads in full as a number ("100", "0.5"): written in quotes, it is a TOML
 // string, which an option that takes numbers refuses (apply_config_file).
 bool reads_as_number(const std::string& text) {
@@ -148,7 +164,7 @@ std::string toml_scalar(const std::string& text, const std::string& where, const
                                      "' is no TOML value: a string is written in quotes (" + key +
                                      " = \"" + text +
                                      "\"), a boolean as true or false, a number bare");
-  return number_without_underscores(text, where);
+  return decimal_integer(number_without_underscores(text, where), where);
 }
 
 // Where a string of the line opens and closes: quote is the open string's quote (0 outside one);
@@ -222,9 +238,16 @@ ConfigItems read_toml(std::istream& in, const std::string& path,
     if (text.front() == '[')
       throw UsageError("--config", where + ": tables are not used; write key = value lines");
     const auto eq = text.find('=');
-    if (eq == std::string::npos) throw UsageError("--config", where + ": expected key = value");
+    if (eq == std::string::npos)
+      throw UsageError("--config", where + ": expected key = value" +
+                                       (text.front() == '{'
+                                            ? " (a config file is TOML, key = value lines; JSON "
+                                              "is not read)"
+                                            : ""));
     std::string key = trim(text.substr(0, eq));
-    if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
+    // A quoted key, "t_end" or 't_end' (TOML's basic and literal strings), is the bare key.
+    if (key.size() >= 2 && (key.front() == '"' || key.front() == '\'') &&
+        key.back() == key.front())
       key = key.substr(1, key.size() - 2);
     const std::string value = trim(text.substr(eq + 1));
     bool quoted_literal = false;

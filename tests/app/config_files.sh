@@ -136,11 +136,23 @@ cut -d, -f1,2,4,5 bench2/work_precision_simulation.csv | grep -v '^#' >bench2.ro
 cut -d, -f1,2,4,5 bench3/work_precision_simulation.csv | grep -v '^#' >bench3.rows
 cmp -s bench2.rows bench3.rows || fail "bench --config on its result file does not repeat the measurement"
 echo "ok: sweep, theory and bench read their options from files; a sweep repeats from its summary"
+# TOML's literal-quoted keys and its integers of base 16, 8 and 2 (with underscores) read as
+# the same run's decimal values.
+printf "'t_end' = 2\nseed = 0x1_0\nparticles = 0b1100_1000\nrelax = 0o12\n" >bases.toml
+"$bin" simulate --config bases.toml --out bases.csv --quiet 2>/dev/null || fail "run from bases.toml"
+"$bin" simulate --t-end 2 --seed 16 --particles 200 --relax 10 --out decimal.csv --quiet 2>/dev/null ||
+  fail "the same run by flags"
+cmp bases.csv decimal.csv || fail "a literal-quoted key or a 0x, 0o, 0b integer read otherwise"
 
 failures=0
 printf 'densty = 0.1\n' >typo.toml
 refused "--config: typo.toml: unknown key 'densty' for simulate; allowed: dim, particles, density" \
   simulate --config typo.toml
+printf 'seed = 0x1g\n' >hex.toml
+refused "--config: hex.toml line 1: '0x1g' is no integer of base 16 within 64 bits" simulate --config hex.toml
+printf '{"restitution": 0.8}\n' >json.toml
+refused "--config: json.toml line 1: expected key = value \(a config file is TOML, key = value lines; JSON is not read\)" \
+  simulate --config json.toml
 printf 'particles = 1__000\n' >underscores.toml
 refused "--config: underscores.toml line 1: '1__000': an underscore in a number stands between two digits" \
   simulate --config underscores.toml
