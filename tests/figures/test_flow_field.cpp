@@ -34,6 +34,7 @@ BOOST_AUTO_TEST_CASE(rejects_mismatched_panels) {
   validation::FlowFieldPanel p;
   p.box = 10;
   p.cells = 4;
+  p.density_noise = p.vorticity_noise = 1.0;
   p.vx.assign(16, 0.0);
   p.vy.assign(15, 0.0);
   p.vorticity.assign(16, 0.0);
@@ -83,6 +84,7 @@ validation::FlowFieldPanel uniform_panel(double vorticity) {
   p.title = "test";
   p.box = 10;
   p.cells = 4;
+  p.density_noise = p.vorticity_noise = 1.0;
   p.vx.assign(16, 0.1);
   p.vy.assign(16, -0.1);
   p.vorticity.assign(16, vorticity);

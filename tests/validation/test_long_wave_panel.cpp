@@ -1,8 +1,11 @@
 // The figure's long-wave fields (flow_field.hpp, long_wave_panel) against a field known exactly:
-// particles on a square lattice (uniform density) carrying the shear wave v_y = a sin(2πx/L).
+// particles on a square lattice (uniform density) carrying the shear wave v_y = a sin(2πx/L);
+// and their noise levels against the fields of gases without correlations.
 #define BOOST_TEST_MODULE validation_long_wave_panel
 #include <boost/test/unit_test.hpp>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "molchaos/sim/result.hpp"
 #include "molchaos/validation/flow_field.hpp"
@@ -35,4 +38,44 @@ BOOST_AUTO_TEST_CASE(shear_wave_is_reproduced_exactly) {
       BOOST_TEST(std::abs(p.vorticity[c] - 2 * k * std::cos(k * px)) < 1e-9);
       BOOST_TEST(std::abs(p.relative_density[c] - 1.0) < 1e-9);
     }
+}
+
+// A gas without correlations (uniform positions, Gaussian velocities independent of them): the
+// fields' mean squares over the grid and over many such gases are the panel's noise levels
+// squared, within 4 standard errors of that mean (each gas one sample).
+BOOST_AUTO_TEST_CASE(noise_levels_are_those_of_a_gas_without_correlations) {
+  constexpr int particles = 1000, gases = 200, cells = 24;
+  constexpr double box = 150.0;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> where(0.0, box);
+  std::normal_distribution<double> velocity;
+  std::vector<double> density_ratio, vorticity_ratio;
+  for (int g = 0; g < gases; ++g) {
+    sim::Snapshot s;
+    s.box = box;
+    for (int i = 0; i < particles; ++i) {
+      s.positions.insert(s.positions.end(), {where(rng), where(rng)});
+      s.velocities.insert(s.velocities.end(), {velocity(rng), velocity(rng)});
+    }
+    const auto p = validation::long_wave_panel(s, cells, 5, "noise");
+    double d2 = 0, w2 = 0;
+    for (std::size_t c = 0; c < p.vorticity.size(); ++c) {
+      d2 += (p.relative_density[c] - 1.0) * (p.relative_density[c] - 1.0);
+      w2 += p.vorticity[c] * p.vorticity[c];
+    }
+    const auto points = static_cast<double>(p.vorticity.size());
+    density_ratio.push_back(d2 / points / (p.density_noise * p.density_noise));
+    vorticity_ratio.push_back(w2 / points / (p.vorticity_noise * p.vorticity_noise));
+  }
+  for (const auto* ratios : {&density_ratio, &vorticity_ratio}) {
+    double sum = 0, sum2 = 0;
+    for (double r : *ratios) {
+      sum += r;
+      sum2 += r * r;
+    }
+    const double mean = sum / gases;
+    const double se = std::sqrt((sum2 / gases - mean * mean) / (gases - 1));
+    BOOST_TEST_INFO("mean square / noise² = " << mean << " ± " << se);
+    BOOST_TEST(std::abs(mean - 1.0) < 4.0 * se);
+  }
 }

@@ -22,6 +22,11 @@ FlowFieldPanel flow_field_panel(const sim::Snapshot& snapshot, int cells, std::s
   panel.title = std::move(title);
   panel.box = snapshot.box;
   panel.cells = cells;
+  // A cell of `mean` particles: its count Poisson, each velocity component of variance T/mean;
+  // the vorticity's central differences (structure_factor.cpp) add four such components over
+  // (2 × cell width)².
+  panel.density_noise = 1.0 / std::sqrt(mean);
+  panel.vorticity_noise = 1.0 / (std::sqrt(mean) * f.cell_width);
   const auto w = vorticity(f);
   for (std::size_t c = 0; c < f.number.size(); ++c) {
     panel.relative_density.push_back(f.number[c] / mean);
@@ -67,6 +72,13 @@ FlowFieldPanel long_wave_panel(const sim::Snapshot& snapshot, int cells, int max
   panel.title = std::move(title);
   panel.box = snapshot.box;
   panel.cells = cells;
+  // Without correlations ⟨|ρ_k|²⟩ = N and ⟨|j_k,a|²⟩ = N T, independent between modes and
+  // components, and Re(z e^{−ik·r}) of such a z has half its variance: each mode adds 2/N to the
+  // variance of the relative density and 2k²/N to that of the vorticity (in units of √T/σ).
+  double squared_wavenumbers = 0;
+  for (const auto& m : modes) squared_wavenumbers += m.kx * m.kx + m.ky * m.ky;
+  panel.density_noise = std::sqrt(2.0 * static_cast<double>(modes.size()) / count);
+  panel.vorticity_noise = std::sqrt(2.0 * squared_wavenumbers / count);
   const double w = snapshot.box / cells;
   const std::complex<double> i_unit{0, 1};
   for (int y = 0; y < cells; ++y)

@@ -15,11 +15,15 @@ namespace molchaos::validation {
 
 /// One snapshot on a cells × cells grid (row-major, x fastest): density relative to the mean,
 /// mean velocity in units of the thermal √T of the snapshot, vorticity in the same units per σ.
+/// The noise levels are the standard deviations the density and the vorticity would have at a
+/// grid point in a gas without correlations (uniform positions, S(k) = 1, velocities independent
+/// of them), the unit in which the figure compares gases and times.
 struct FlowFieldPanel {
   std::string title;
   double box = 0;
   int cells = 0;
   std::vector<double> relative_density, vx, vy, vorticity;
+  double density_noise = 0, vorticity_noise = 0;
 };
 
 /// Rows of panels: one row per time, one column per gas.
