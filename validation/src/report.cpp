@@ -445,10 +445,12 @@ std::string figure_caption(const std::string& file, const ReproduceResults& r) {
   if (file.starts_with("fig_flow_field"))
     return fmt::format(
         "Flow and density fields of the original gas and the randomized gases (ε = {}, n = {}, "
-        "N = {}), built from the Fourier modes |m|² ≤ {} of one run each: the mean velocity as "
-        "arrows over its vorticity (colour), and the density over its mean. Look for the vortices "
-        "that grow first in the original gas and the density clusters that follow, and for any "
-        "structure in the shuffled gases.",
+        "N = {}), built from the Fourier modes |m|² ≤ {} of one run each: the vorticity in units "
+        "of its standard deviation in a gas without correlations (colour, one range for all "
+        "panels), the mean velocity as arrows, and contours where the density lies 2 such units "
+        "above its mean (solid) or below it (dashed). A gas without correlations stays within "
+        "about ±3 of them; look for the vortices that grow beyond that in the original gas and "
+        "the dense patches that follow, and for any structure in the shuffled gases.",
         r.gas_fields.spec.restitution, r.gas_fields.spec.density, r.gas_fields.spec.particles,
         r.gas_fields.spec.field_max_norm2);
   if (file.starts_with("fig_structure_factor_3d")) {
