@@ -297,8 +297,7 @@ void control_claims(CorrelationStudy& S) {
     }
     const double pv = chi_square_p_value(c, k);
     S.claims.push_back(
-        {fmt::format("{}: no velocity correlations at any r (G_par = G_perp = 0)",
-                     gas_name(mode)),
+        {fmt::format("{}: no velocity correlations at any r (G_par = G_perp = 0)", gas_name(mode)),
          verdict_p(pv), Measurement{k > 0 ? c / k : 0.0, 0.0},
          fmt::format("chi2/dof over all bins and times, chi2 = {:.1f}, dof = {}, "
                      "p = {:.2g}",
@@ -394,6 +393,61 @@ std::string contact_moments_csv(const CorrelationStudy& S) {
   return out;
 }
 
+std::string cooling_decomposition_csv(const CorrelationStudy& S) {
+  std::string out =
+      table_header(S) +
+      "# paired by seed, original gas against flux-shuffled gas: A_ratio = A_orig/A_chaos, "
+      "product_ratio = (W Y)_chaos/(W Y)_orig with W = omega/omega_E and Y the energy lost per "
+      "collision, difference = A_ratio - product_ratio (the report's chi2 sums the normal scores "
+      "of difference/difference_err, Student's t with pairs - 1 dof), log_frequency = "
+      "ln(W_chaos/W_orig), log_dissipation = ln(Y_chaos/Y_orig)\n"
+      "dimension,density,restitution,pairs,A_ratio,A_ratio_err,product_ratio,product_ratio_err,"
+      "difference,difference_err,log_frequency,log_frequency_err,log_dissipation,"
+      "log_dissipation_err\n";
+  for (const auto& r : S.decomposition)
+    out += fmt::format(
+        "{},{},{},{},{:.10g},{:.3g},{:.10g},{:.3g},{:.4g},{:.3g},{:.6g},{:.3g},{:.6g},{:.3g}\n",
+        r.dimension, r.density, r.restitution, r.pairs, r.A_ratio.value, r.A_ratio.error,
+        r.product_ratio.value, r.product_ratio.error, r.difference.value, r.difference.error,
+        r.log_frequency.value, r.log_frequency.error, r.log_dissipation.value,
+        r.log_dissipation.error);
+  return out;
+}
+
+std::string ansatz_fits_csv(const CorrelationStudy& S) {
+  std::string out =
+      table_header(S) +
+      "# shifts: original gas - flux-shuffled gas at contact (a2 difference removed), paired by "
+      "seed; the fits weight them with their standard errors and the correlation matrix of the "
+      "four pooled over the points of one dimension and density\n"
+      "# routes: b (printed dyad) and beta_par (two amplitudes) from the cooling rate and from the "
+      "contact statistics; diff = cooling - contact over the paired runs, cov = covariance of "
+      "the two means. The report's chi2 of equality sums the normal scores of diff/diff_err "
+      "(Student's t with pairs - 1 dof); its ratio fits cooling = r contact with weights "
+      "1/(cooling_err^2 + r^2 contact_err^2 - 2 r cov), iterated, its error inflated by "
+      "sqrt(chi2/(points - 1)) of that fit where above 1\n"
+      "dimension,density,restitution,pairs,shift_P,shift_P_err,shift_Q,shift_Q_err,shift_W,"
+      "shift_W_err,shift_Y,shift_Y_err,b,b_err,chi2_one,beta_par,beta_par_err,beta_perp,"
+      "beta_perp_err,beta_cov,chi2_two,b_cooling,b_cooling_err,b_contact,b_contact_err,b_diff,"
+      "b_diff_err,b_cov,beta_par_cooling,beta_par_cooling_err,beta_par_contact,"
+      "beta_par_contact_err,beta_par_diff,beta_par_diff_err,beta_par_cov\n";
+  const auto route = [](const RoutePair& r) {
+    return fmt::format("{:.6g},{:.3g},{:.6g},{:.3g},{:.6g},{:.3g},{:.4g}", r.cooling.value,
+                       r.cooling.error, r.contact.value, r.contact.error, r.difference.value,
+                       r.difference.error, r.covariance);
+  };
+  for (const auto& r : S.ansatz)
+    out += fmt::format(
+        "{},{},{},{},{:.6g},{:.3g},{:.6g},{:.3g},{:.6g},{:.3g},{:.6g},{:.3g},{:.6g},{:.3g},{:.5g},"
+        "{:.6g},{:.3g},{:.6g},{:.3g},{:.4g},{:.5g},{},{}\n",
+        r.dimension, r.density, r.restitution, r.pairs, r.shift_P.value, r.shift_P.error,
+        r.shift_Q.value, r.shift_Q.error, r.shift_W.value, r.shift_W.error, r.shift_Y.value,
+        r.shift_Y.error, r.b.value, r.b.error, r.chi2_one, r.beta_par.value, r.beta_par.error,
+        r.beta_perp.value, r.beta_perp.error, r.beta_covariance, r.chi2_two, route(r.b_routes),
+        route(r.beta_par_routes));
+  return out;
+}
+
 std::string pair_correlations_csv(const CorrelationStudy& S) {
   std::string out =
       table_header(S) +
@@ -416,6 +470,8 @@ void write_correlation_tables(const CorrelationStudy& S, const std::string& dire
     write_file_atomically(directory + "/" + name, after_title(csv, rerun_lines));
   };
   write("contact_moments.csv", contact_moments_csv(S));
+  write("ansatz_fits.csv", ansatz_fits_csv(S));
+  write("cooling_decomposition.csv", cooling_decomposition_csv(S));
   write("pair_correlations.csv", pair_correlations_csv(S));
   write("impact_parameter.csv",
         impact_parameter_csv(S.impact_parameter,

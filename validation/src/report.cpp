@@ -508,7 +508,8 @@ std::string two_routes_headline(const CorrelationStudy& c) {
       in_two + in_three == c.b_routes.points
           ? fmt::format(
                 " The state points are the correlation study's, {} in d = 2 and {} in "
-                "d = 3; the Fig. 4 ensemble compares the two routes in its own row below.",
+                "d = 3 (each point's paired routes and fits: `ansatz_fits.csv`); the Fig. 4 "
+                "ensemble compares the two routes in its own row below.",
                 in_two, in_three)
           : std::string();
   return fmt::format(

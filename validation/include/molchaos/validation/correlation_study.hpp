@@ -61,12 +61,17 @@ struct CorrelationStudy {
 CorrelationStudy run_correlation_study(const CorrelationStudyConfig& config,
                                        const SweepOptions& sweep);
 
-/// The two tables as CSV text: '#' lines (what ran, the code version), the column names, then one
-/// row per record.
+/// The tables as CSV text: '#' lines (what ran, the code version), the column names, then one
+/// row per record. ansatz_fits_csv: per state point, the shifts at contact, the ansatz's fits
+/// and the paired routes to b and β∥ behind the report's global tests of them;
+/// cooling_decomposition_csv: per state point, the cooling rate's ratio taken apart.
 std::string contact_moments_csv(const CorrelationStudy& study);
+std::string ansatz_fits_csv(const CorrelationStudy& study);
+std::string cooling_decomposition_csv(const CorrelationStudy& study);
 std::string pair_correlations_csv(const CorrelationStudy& study);
 
-/// Writes directory/contact_moments.csv, pair_correlations.csv and impact_parameter.csv
+/// Writes directory/contact_moments.csv, ansatz_fits.csv, cooling_decomposition.csv,
+/// pair_correlations.csv and impact_parameter.csv
 /// atomically, each with `rerun_lines` (the '#' lines of the options that re-run it) after its
 /// title line.
 void write_correlation_tables(const CorrelationStudy& study, const std::string& directory,
