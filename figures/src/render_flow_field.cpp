@@ -130,7 +130,7 @@ detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bo
       " sqrt(T)), and contours where the density\n"
       "stands 2 such units above its mean (solid) or below it (dashed).";
   script.canvas.png_width = 360 * static_cast<int>(columns) + 110;
-  script.canvas.png_height = 340 * static_cast<int>(animated ? 1 : rows);
+  script.canvas.png_height = animated ? 380 : 340 * static_cast<int>(rows);
   script.canvas.pdf_width = 2.2 * static_cast<double>(columns) + 0.7;
   script.canvas.pdf_height = 2.1 * static_cast<double>(animated ? 1 : rows);
   // 0.4 s per frame: ~10 s for the reproduction's 24 frames
@@ -147,11 +147,13 @@ detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bo
   c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
   c += "  set cbrange [" + detail::number(-scale.vorticity) + ":" +
        detail::number(scale.vorticity) + "]\n";
-  c += "  set cblabel 'vorticity / its noise without correlations'\n";
+  c += "  set cblabel 'vorticity in noise units'\n";
+  // A frame has one row: its titles need a larger share of its height than the still figure's.
+  const std::string top = animated ? "0.86" : "0.94";
   const std::string layout = "  set multiplot layout " + std::to_string(animated ? 1 : rows) + "," +
                              std::to_string(columns) +
-                             " margins screen 0.02, screen 0.86, screen 0.02, screen 0.94 spacing "
-                             "screen 0.01, screen 0.05\n";
+                             " margins screen 0.02, screen 0.86, screen 0.02, screen " + top +
+                             " spacing screen 0.01, screen 0.05\n";
   for (std::size_t r = 0; r < rows; ++r) {
     if (animated || r == 0)
       c += layout + k_panel_settings +
