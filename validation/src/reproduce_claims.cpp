@@ -236,8 +236,8 @@ Claim claim_randomized_haff_form(const ReproduceResults& R) {
     for (const auto& o : R.fig3_runs) {
       if (!o.ok || std::string(sim::to_string(o.result.parameters.randomize)) != mode) continue;
       const auto& samples = o.result.samples;
-      const Tau0Estimate early = estimate_tau0(k_haff_estimator, samples, std::exp(k_first),
-                                               std::exp(k_split));
+      const Tau0Estimate early =
+          estimate_tau0(k_haff_estimator, samples, std::exp(k_first), std::exp(k_split));
       const Tau0Estimate late =
           estimate_tau0(k_haff_estimator, samples, std::exp(k_split), std::exp(last));
       if (early.ok && late.ok) ratios.push_back(late.tau0_unit / early.tau0_unit - 1.0);
@@ -248,9 +248,8 @@ Claim claim_randomized_haff_form(const ReproduceResults& R) {
                             : mode == "flux" ? "flux shuffle"
                                              : "original gas";
     c.rows.push_back(compared_row(
-        fmt::format("{}: late tau0 / early tau0 - 1", gas), Measurement{0.0, 0.0}, m,
-        std::nullopt, agreement(m, Measurement{0.0, 0.0}),
-        claimed ? "reproduced" : "follows Haff's form",
+        fmt::format("{}: late tau0 / early tau0 - 1", gas), Measurement{0.0, 0.0}, m, std::nullopt,
+        agreement(m, Measurement{0.0, 0.0}), claimed ? "reproduced" : "follows Haff's form",
         claimed ? "not reproduced" : "leaves Haff's form",
         fmt::format("{} runs of Fig. 3; 0 for a gas of Haff's form{}", ratios.size(),
                     mode == "none" ? " (the control: its correlations grow)" : "")));
@@ -357,29 +356,37 @@ Claim claim_randomized_A_flat(const ReproduceResults& R) {
 
 Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
   Claim c{ClaimSource::paper, "A(ε) of the original gas depends on ε (Fig. 4)", "", "", {}};
+  // The paper's point is a dependence beyond kinetic theory's (b = 0), whose own slope is small
+  // but not zero: the slope is compared with theory's. Within 3 SE the runs do not resolve a
+  // departure (the paper gives no size of one to rule out): not decided, rather than not
+  // reproduced.
   const auto list = slopes(R, "none");
   for (const auto& s : list) {
-    const Agreement flat = agreement(s.simulated, Measurement{0.0, 0.0});
+    const Measurement theory_slope{s.theory, 0.0};
+    const Agreement same = agreement(s.simulated, theory_slope);
     c.rows.push_back(compared_row(
-        fmt::format("original gas: A depends on eps (slope != 0) [none, n = {}], slope dA/deps",
+        fmt::format("original gas: A depends on eps beyond kinetic theory [none, n = {}], slope "
+                    "dA/deps",
                     s.density),
-        Measurement{0.0, 0.0}, s.simulated, std::nullopt, flat, "not reproduced", "reproduced",
-        fmt::format("'theory' column: a flat A; kinetic theory's slope (b = 0) is {:.4f}; linear "
-                    "fit, chi2/dof = {:.2f}; {}",
-                    s.theory, s.chi2_per_dof, jackknife_note(s.error_over_seeds))));
-    c.rows.back().rule = "reproduced if the slope differs from 0 by more than 3 SE";
+        theory_slope, s.simulated, std::nullopt, same, "not decided", "reproduced",
+        fmt::format("'theory' column: kinetic theory's slope (b = 0); linear fit, chi2/dof = "
+                    "{:.2f}; from 0 by {:.1f} SE; {}",
+                    s.chi2_per_dof,
+                    s.simulated.error > 0 ? s.simulated.value / s.simulated.error : 0.0,
+                    jackknife_note(s.error_over_seeds))));
+    c.rows.back().rule =
+        "reproduced if the slope differs from kinetic theory's by more than 3 SE, else not decided";
   }
-  c.verdict = verdict_of_all(c.rows, "reproduced", "not reproduced");
-  // The paper's point is a dependence beyond kinetic theory's (b = 0), whose own slope is small
-  // but not zero: the distance from it too.
+  c.verdict = verdict_of_all(c.rows, "reproduced", "not decided");
   std::vector<std::string> beyond;
   for (const auto& s : list)
     if (s.simulated.error > 0)
       beyond.push_back(fmt::format("{:.1f} SE at n = {}",
                                    (s.simulated.value - s.theory) / s.simulated.error, s.density));
-  c.deciding = "slope dA/dε " + slope_list(list) +
-               (beyond.empty() ? std::string()
-                               : fmt::format("; from theory's slope by {}", fmt::join(beyond, ", ")));
+  c.deciding =
+      "slope dA/dε " + slope_list(list) +
+      (beyond.empty() ? std::string()
+                      : fmt::format("; from theory's slope by {}", fmt::join(beyond, ", ")));
   return c;
 }
 
