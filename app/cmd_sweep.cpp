@@ -198,6 +198,18 @@ void run_sweep_command(SweepCliOptions& o) {
         : s.runs == 0 ? "  (not measured: no run succeeded)"
                       : "  (no error bar: fewer than 2 runs)");
     print_notes(s);
+    // A run that left the homogeneous cooling state is fitted up to its break-down only: where
+    // runs did, their A measures a cooling that kinetic theory's homogeneous state no longer
+    // describes beyond that time, and a diff/SE against A_theory says so only in the CSV.
+    if (s.breakdowns > 0)
+      std::cerr << fmt::format(
+          "  note: {} of the {} runs left the homogeneous cooling state (break-down at t = {:.4g} "
+          "on average, before t_end) and are fitted up to it (doc/validation.md, \"The fit window "
+          "of A\"){}\n",
+          s.breakdowns, s.runs, s.breakdown_time.value,
+          s.breakdowns == s.runs ? "; with every run clustering, compare with theory at a "
+                                   "smaller N or box"
+                                 : "");
     // A_theory is that of N → ∞. A gas of N particles differs from it at order 1/N: zero total
     // momentum leaves (N − 1)d of the N d degrees of freedom that T counts, and the velocity
     // distribution of N particles is not Maxwell's (a2 = O(1/N) even when elastic). Both methods
