@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -71,6 +72,20 @@ int main(int argc, char** argv) {
   // Under mpirun/srun every rank runs main(). Rank 0 parses and runs the command; the others only
   // compute the runs rank 0 hands out, until the session on rank 0 goes out of scope (on every
   // return path, usage errors included) and releases them. Without a launcher: no MPI at all.
+  // MOLCHAOS_MPI=0 under a launcher of several processes would have each of them run the whole
+  // command and write the same files at once.
+  if (!molchaos::mpi::launched_by_mpi() && molchaos::mpi::launched_processes() > 1) {
+    const char* rank = std::getenv("OMPI_COMM_WORLD_RANK");
+    if (rank == nullptr) rank = std::getenv("PMI_RANK");
+    if (rank == nullptr || std::strcmp(rank, "0") == 0)  // said once, by the first process
+      std::fprintf(
+          stderr,
+          "molchaos: error: MOLCHAOS_MPI=0 in one of %d processes that a launcher started: "
+          "each would run the whole command and write the same files; start one process "
+          "(mpirun -np 1), or leave MOLCHAOS_MPI unset to spread the runs over all %d\n",
+          molchaos::mpi::launched_processes(), molchaos::mpi::launched_processes());
+    return 2;
+  }
   molchaos::mpi::Session mpi_session(argc, argv);
   if (mpi_session.is_worker()) return mpi_session.serve();
 #endif

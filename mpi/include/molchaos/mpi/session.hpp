@@ -9,6 +9,10 @@ namespace molchaos::mpi {
 /// this process, judged by the variables those launchers set. MOLCHAOS_MPI=0 forces false.
 bool launched_by_mpi();
 
+/// The number of processes the launcher started (OMPI_COMM_WORLD_SIZE, PMI_SIZE), read without
+/// MPI and whatever MOLCHAOS_MPI says; 1 when no launcher names one.
+int launched_processes();
+
 /// Rank and size of MPI_COMM_WORLD; 0 and 1 when MPI is not initialised.
 int world_rank();
 int world_size();
