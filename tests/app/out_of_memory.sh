@@ -9,24 +9,26 @@ bin=$(realpath "$1")
 . "$(dirname "$0")/../scratch.sh"
 enter_scratch_folder
 no_files() { [ -z "$(ls -A | grep -v '^err.txt$')" ] || fail "$1: files left behind: $(ls -A)"; }
-# 1e8 disks hold at least 15 GB; the address space is limited to 2 GB.
-(ulimit -v 2000000; "$bin" simulate --particles 100000000 --t-end 1 --out run.csv 2>err.txt)
-status=$?
-[ "$status" -eq 2 ] || fail "simulate, 1e8 disks: exit status $status, expected 2"
-grep -q -- "--particles: a run of 100000000 disks holds at least 15 GB.*allowed: at most [0-9]* particles" err.txt ||
-  fail "simulate, 1e8 disks, said: $(cat err.txt)"
-no_files "1e8 disks"
-echo "ok: refused at once: $(cat err.txt)"
+# refused_at_once LABEL PATTERN ARGS...: simulate ARGS, its address space limited to 2 GB, exits 2
+# at once with a message matching PATTERN and leaves no file.
+refused_at_once() {
+  local label=$1 pattern=$2
+  shift 2
+  (ulimit -v 2000000; "$bin" simulate "$@" --out run.csv 2>err.txt)
+  local status=$?
+  [ "$status" -eq 2 ] || fail "simulate, $label: exit status $status, expected 2"
+  grep -q -- "$pattern" err.txt || fail "simulate, $label, said: $(cat err.txt)"
+  no_files "$label"
+  echo "ok: refused at once: $(cat err.txt)"
+}
+# 1e8 disks hold at least 15 GB.
+refused_at_once "1e8 disks" \
+  "--particles: a run of 100000000 disks holds at least 15 GB.*allowed: at most [0-9]* particles" \
+  --particles 100000000 --t-end 1
 # 3000 snapshots of 1e5 disks take 9.6 GB.
-times=$(seq -s ' ' 1 3000)
-(ulimit -v 2000000; "$bin" simulate --particles 100000 --relax 0 --t-end 3000 --snapshot-times $times \
-  --out run.csv 2>err.txt)
-status=$?
-[ "$status" -eq 2 ] || fail "simulate, 3000 snapshots: exit status $status, expected 2"
-grep -q -- "--snapshot-times: 3000 snapshots of 100000 disks take at least 9.6 GB.*allowed: at most [0-9]* snapshot times" err.txt ||
-  fail "simulate, 3000 snapshots, said: $(cat err.txt)"
-no_files "3000 snapshots"
-echo "ok: refused at once: $(cat err.txt)"
+refused_at_once "3000 snapshots" \
+  "--snapshot-times: 3000 snapshots of 100000 disks take at least 9.6 GB.*allowed: at most [0-9]* snapshot times" \
+  --particles 100000 --relax 0 --t-end 3000 --snapshot-times $(seq -s ' ' 1 3000)
 # 3e6 disks pass the check under 0.5 GB (at least 150 bytes each) but need more.
 (ulimit -v 500000; "$bin" simulate --particles 3000000 --t-end 1 --out run.csv 2>err.txt)
 status=$?

@@ -470,39 +470,38 @@ def test_readers_refuse_truncated_files(molchaos_bin, tmp_path):
         molchaos.read_snapshot_csv(cut)
 
 
-def test_a_run_beyond_the_memory_raises_memory_error_with_the_clis_words():
-    # Was: MemoryError("std::bad_alloc"). In its own interpreter, its address space cut to 0.5 GB
-    # above what it holds after the imports: 3e6 disks pass the check before the run (at least
-    # 150 bytes each) but need about 210.
-    code = """
+def run_with_address_space(limit, call, error):
+    # `call` in a fresh interpreter whose address space is cut to `limit` (a Python expression of
+    # `held`, the bytes it holds after the imports); prints the message of `error` it raises.
+    code = f"""
 import resource, molchaos
 held = next(int(line.split()[1]) * 1024 for line in open("/proc/self/status")
             if line.startswith("VmSize:"))
-resource.setrlimit(resource.RLIMIT_AS, (held + 500_000_000, held + 500_000_000))
+resource.setrlimit(resource.RLIMIT_AS, ({limit}, {limit}))
 try:
-    molchaos.simulate(particles=3_000_000, t_end=1.0)
-except MemoryError as e:
+    {call}
+except {error} as e:
     print(e)
 """
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.startswith("out of memory") and "fewer particles" in out.stdout
+    return out.stdout
+
+
+def test_a_run_beyond_the_memory_raises_memory_error_with_the_clis_words():
+    # Was: MemoryError("std::bad_alloc"). 0.5 GB above what the interpreter holds: 3e6 disks pass
+    # the check before the run (at least 150 bytes each) but need about 210.
+    said = run_with_address_space("held + 500_000_000",
+                                  "molchaos.simulate(particles=3_000_000, t_end=1.0)", "MemoryError")
+    assert said.startswith("out of memory") and "fewer particles" in said
 
 
 def test_a_run_whose_parameters_exceed_the_memory_is_refused_before_it_starts():
-    # 1e8 disks hold at least 15 GB; the address space is cut to 2 GB after the imports.
-    code = """
-import resource, molchaos
-resource.setrlimit(resource.RLIMIT_AS, (2_000_000_000, 2_000_000_000))
-try:
-    molchaos.simulate(particles=100_000_000, t_end=1.0)
-except ValueError as e:
-    print(e)
-"""
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
-    assert out.returncode == 0, out.stderr
-    assert out.stdout.startswith("particles: a run of 100000000 disks holds at least 15 GB")
-    assert "allowed: at most" in out.stdout
+    # 1e8 disks hold at least 15 GB, more than 2 GB.
+    said = run_with_address_space("2_000_000_000",
+                                  "molchaos.simulate(particles=100_000_000, t_end=1.0)", "ValueError")
+    assert said.startswith("particles: a run of 100000000 disks holds at least 15 GB")
+    assert "allowed: at most" in said
 
 
 def test_theory_names_an_unknown_keyword():
