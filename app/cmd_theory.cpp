@@ -160,8 +160,9 @@ void print_prediction_text(const TheoryOptions& o, const theory::TheoryReport& r
                            general(p.A_uncorrelated.value, p.A_uncorrelated.error, 10),
                            p.A_uncorrelated.error);
   std::cout << fmt::format("  Enskog ω_coll        {:.10g}\n", p.enskog_collision_frequency);
-  // The end to six digits, cut rather than rounded (rounded, 0.666666666666631 read 0.666667, a
-  // b the range refuses); the full end is in --json and in the message refusing a b.
+  // The end to its last certain digit, cut rather than rounded (rounded to six digits,
+  // 0.666666666666631 read 0.666667, a b the range refuses; cut to six, it hid b it takes), as
+  // the message refusing a b prints it; --json has the full end and its error.
   std::cout << fmt::format("  allowed b            {}\n\n", theory::range_text(r.b_range));
 }
 

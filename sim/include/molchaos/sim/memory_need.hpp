@@ -10,9 +10,10 @@
 
 namespace molchaos::sim {
 
-/// Bytes per particle that a run holds at least: the engine's records (doc/benchmarks.md: 159-175
-/// per disk, 171-311 per sphere, peaks of whole runs above that) or DSMC's one velocity (padded
-/// to 32 bytes in 3D: dsmc.hpp), and each snapshot's positions and velocities in doubles.
+/// Bytes per particle that a run holds at least: the engine's records (the bench's
+/// engine_bytes_per_particle, doc/benchmarks.md: 155-220 per disk, 171-311 per sphere, peaks of
+/// whole runs above that) or DSMC's one velocity (padded to 32 bytes in 3D: dsmc.hpp), and each
+/// snapshot's positions and velocities in doubles.
 inline constexpr std::uint64_t k_least_engine_bytes_per_disk = 150;
 inline constexpr std::uint64_t k_least_engine_bytes_per_sphere = 170;
 inline constexpr std::uint64_t k_dsmc_bytes_per_particle_2d = 16;
