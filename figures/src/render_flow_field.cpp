@@ -96,6 +96,11 @@ void draw_panel(std::string& c, const validation::FlowFieldPanel& p, const std::
        " using 1:2 with lines lw 1.5 dt 2 lc rgb '#2d004b'\n";
 }
 
+// The name of the data blocks of the panel in row r, column col.
+std::string panel_tag(std::size_t r, std::size_t col) {
+  return std::to_string(r) + "_" + std::to_string(col);
+}
+
 // Every row has as many panels as the first, and at least one.
 std::size_t checked_columns(const validation::FlowFieldData& data) {
   detail::require_non_empty("FlowFieldData.rows", data.rows.size());
@@ -122,13 +127,12 @@ detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bo
   script.image_stem = "fig_flow_field";
   script.description =
       std::string(animated ? "The flow-field figure as an animation, one frame per time.\n" : "") +
-      "Flow and density fields of the long waves: the vorticity in units of its standard "
-      "deviation\n"
-      "in a gas without correlations (colour, one range for every panel), the mean velocity as\n"
-      "arrows (one scale for the whole figure, longest arrow " +
+      "Flow and density fields of the long waves: the vorticity in units of its standard\n"
+      "deviation in a gas without correlations (colour, one range for every panel), the mean\n"
+      "velocity as arrows (one scale for the whole figure, longest arrow " +
       detail::label_number(scale.speed) +
-      " sqrt(T)), and contours where the density\n"
-      "stands 2 such units above its mean (solid) or below it (dashed).";
+      " sqrt(T)),\nand contours where the density stands 2 such units above its mean (solid) or\n"
+      "below it (dashed).";
   script.canvas.png_width = 360 * static_cast<int>(columns) + 110;
   script.canvas.png_height = animated ? 380 : 340 * static_cast<int>(rows);
   script.canvas.pdf_width = 2.2 * static_cast<double>(columns) + 0.7;
@@ -139,9 +143,8 @@ detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bo
   c += "  set contour base\n  unset surface\n  set view map\n";
   for (std::size_t r = 0; r < rows; ++r)
     for (std::size_t col = 0; col < columns; ++col) {
-      const std::string tag = std::to_string(r) + "_" + std::to_string(col);
-      add_panel_data(script, data.rows[r][col], tag, scale.speed);
-      c += contour_tables(tag);
+      add_panel_data(script, data.rows[r][col], panel_tag(r, col), scale.speed);
+      c += contour_tables(panel_tag(r, col));
     }
   c += "  unset contour\n";
   c += "  set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n";
@@ -159,7 +162,7 @@ detail::FigureScript flow_field_script(const validation::FlowFieldData& data, bo
       c += layout + k_panel_settings +
            "  set colorbox user origin screen 0.89, screen 0.15 size screen 0.025, screen 0.7\n";
     for (std::size_t col = 0; col < columns; ++col)
-      draw_panel(c, data.rows[r][col], std::to_string(r) + "_" + std::to_string(col));
+      draw_panel(c, data.rows[r][col], panel_tag(r, col));
     if (animated) c += "  unset multiplot\n";
   }
   return script;
