@@ -68,11 +68,12 @@ void validate(const Parameters& p) {
     out_of_range("density", number(p.density),
                  "(0, " + number(n_max) + ") (close packing for dimension " +
                      std::to_string(p.dimension) + ")");
-  // A first sample at or after t_end leaves the run with t = 0 and t_end alone, no log-spaced
-  // series: refused when asked for; the default is kept in runs shorter than it.
-  if (p.t_first_sample >= p.t_end && p.t_first_sample != Parameters{}.t_first_sample)
+  // A first sample after t_end would leave the run with t = 0 and t_end alone, no log-spaced
+  // series: refused when asked for; the default is kept in runs shorter than it. (t_first_sample
+  // = t_end asks for the two end points alone, as the elastic-limit checks do.)
+  if (p.t_first_sample > p.t_end && p.t_first_sample != Parameters{}.t_first_sample)
     out_of_range("t_first_sample", number(p.t_first_sample),
-                 "(0, t_end) = (0, " + number(p.t_end) + ") (the log-spaced samples start there)");
+                 "(0, t_end] = (0, " + number(p.t_end) + "] (the log-spaced samples start there)");
   for (double t : p.snapshot_times)
     if (!(t <= p.t_end))
       out_of_range("snapshot_times", number(t), "[0, t_end] = [0, " + number(p.t_end) + "]");
