@@ -244,9 +244,7 @@ Claim claim_randomized_haff_form(const ReproduceResults& R) {
     }
     const Measurement m = mean_and_standard_error(ratios);
     const bool claimed = mode == "paper";  // the other two gases are there to compare with
-    const std::string gas = claimed          ? "paper's shuffle"
-                            : mode == "flux" ? "flux shuffle"
-                                             : "original gas";
+    const std::string gas = gas_name(mode);
     c.rows.push_back(compared_row(
         fmt::format("{}: late tau0 / early tau0 - 1", gas), Measurement{0.0, 0.0}, m, std::nullopt,
         agreement(m, Measurement{0.0, 0.0}), claimed ? "reproduced" : "follows Haff's form",
@@ -361,9 +359,12 @@ Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
   // departure (the paper gives no size of one to rule out): not decided, rather than not
   // reproduced.
   const auto list = slopes(R, "none");
+  std::vector<std::string> beyond;  // each slope's distance from theory's, in its SE
   for (const auto& s : list) {
     const Measurement theory_slope{s.theory, 0.0};
     const Agreement same = agreement(s.simulated, theory_slope);
+    if (same.difference_in_se)
+      beyond.push_back(fmt::format("{:.1f} SE at n = {}", *same.difference_in_se, s.density));
     c.rows.push_back(compared_row(
         fmt::format("original gas: A depends on eps beyond kinetic theory [none, n = {}], slope "
                     "dA/deps",
@@ -378,11 +379,6 @@ Claim claim_original_A_depends_on_eps(const ReproduceResults& R) {
         "reproduced if the slope differs from kinetic theory's by more than 3 SE, else not decided";
   }
   c.verdict = verdict_of_all(c.rows, "reproduced", "not decided");
-  std::vector<std::string> beyond;
-  for (const auto& s : list)
-    if (s.simulated.error > 0)
-      beyond.push_back(fmt::format("{:.1f} SE at n = {}",
-                                   (s.simulated.value - s.theory) / s.simulated.error, s.density));
   c.deciding =
       "slope dA/dε " + slope_list(list) +
       (beyond.empty() ? std::string()
