@@ -56,7 +56,7 @@ RenderedFigure render_impact_parameter(const std::vector<validation::ImpactParam
       detail::add_series(script, plot, detail::panel_block_name(p, s++), std::move(data),
                          mode == "none" ? "yerrorlines pointtype 7 pointsize 0.8 dashtype 1"
                                         : "yerrorlines pointtype 6 pointsize 0.8 dashtype 2",
-                         k++,
+                         detail::gas_colour_index(mode, k++),
                          (mode == "none" ? "original gas" : "flux shuffle") + std::string(", ") +
                              std::to_string(restitutions.size()) + " ε");
     }
